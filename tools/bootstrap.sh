@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what the build and tests need on a fresh machine of this kind (Debian, .NET SDK, gcc, cmake present).
+# Idempotent: installs only what is missing. Run as root (CI and the dev machines run as root).
+set -euo pipefail
+
+need=()
+command -v socat >/dev/null 2>&1 || need+=(socat)
+command -v arm-none-eabi-gcc >/dev/null 2>&1 || need+=(gcc-arm-none-eabi libnewlib-arm-none-eabi)
+command -v clang-14 >/dev/null 2>&1 || command -v clang >/dev/null 2>&1 || need+=(clang)
+[ -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ] || need+=(libclang-rt-14-dev)
+[ -e /usr/include/kdl/chain.hpp ] || need+=(liborocos-kdl-dev)
+command -v cmake >/dev/null 2>&1 || need+=(cmake)
+
+if [ ${#need[@]} -gt 0 ]; then
+  echo "bootstrap: installing ${need[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
+fi
