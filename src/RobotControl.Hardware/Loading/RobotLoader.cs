@@ -138,12 +138,13 @@ public static class RobotLoader
         var crossSection = ReadCrossSection(analysis?.Object("cross_section"), sink, jointIndex, joints);
         analysis?.RejectUnknownFields();
         var requirements = ReadRequirements(r.Object("requirements"), sink);
+        var modules = ModuleSectionReader.Read(r, actuators, arms);
         r.RejectUnknownFields();
 
         sink.ThrowIfAny();
         return new RobotDefinition(
             name, description, file, crossSectionArea, joints, dh, positionJoints, actuators, tool!, arms,
-            mirror!.Value, crossSection!, requirements!, motors, gearheads);
+            mirror!.Value, crossSection!, requirements!, motors, gearheads) { Modules = modules };
     }
 
     private static List<JointDefinition> ReadJoints(JsonFieldReader r, DataErrorSink sink)
@@ -171,7 +172,7 @@ public static class RobotLoader
             var max = j.Number("max_deg", -360, 360);
             if (double.IsFinite(min) && double.IsFinite(max) && min > max)
             {
-                sink.Add(j.Path, $"joint range has min_deg {min} > max_deg {max}");
+                sink.Add(j.FieldPath("min_deg"), $"joint range has min_deg {min} > max_deg {max}");
             }
 
             var source = j.StringOrNull("range_source") ?? string.Empty;
@@ -345,13 +346,14 @@ public static class RobotLoader
                 var motor = d.String("motor");
                 var note = d.StringOrNull("note");
                 d.RejectUnknownFields();
-                if (motor.Length > 0 && motors.Count > 0 && motors.All(m => m.Model != motor))
+                // Checked even when no motor catalogue loaded: a dangling reference must not pass validation.
+                if (motor.Length > 0 && motors.All(m => m.Model != motor))
                 {
                     sink.Add(d.FieldPath("motor"), $"refers to motor \"{motor}\", which no component catalogue defines (known: {string.Join(", ", motors.Select(m => m.Model))})");
                 }
 
                 var gearhead = gearheads.FirstOrDefault(g => g.Series == series);
-                if (series.Length > 0 && gearheads.Count > 0 && gearhead is null)
+                if (series.Length > 0 && gearhead is null)
                 {
                     sink.Add(d.FieldPath("gearhead_series"), $"refers to gearhead series \"{series}\", which no component catalogue defines");
                 }
@@ -373,8 +375,64 @@ public static class RobotLoader
         {
             sink.Add("$.actuators", $"{kinematic.Count} actuators drive kinematic joints but there are {jointCount} joints; each joint needs one");
         }
+        else if (!CouplingIsInvertible(kinematic.Select(x => x.Coupling).ToArray()))
+        {
+            sink.Add("$.actuators", "the coupling coefficients of the kinematic actuators form a singular matrix: joint angles could not be recovered from motor angles");
+        }
+
+        foreach (var duplicate in kinematic.GroupBy(x => x.JointIndex).Where(g => g.Count() > 1))
+        {
+            var i = result.IndexOf(duplicate.Last());
+            sink.Add($"$.actuators[{i}].joint", $"joint {duplicate.Key} ($.joints[{duplicate.Key}]) is already listed against actuator \"{duplicate.First().Name}\"");
+        }
 
         return result;
+    }
+
+    /// <summary>Gaussian elimination with partial pivoting: true when the square coupling matrix is well invertible.</summary>
+    private static bool CouplingIsInvertible(IReadOnlyList<double>[] rows)
+    {
+        var n = rows.Length;
+        if (n == 0)
+        {
+            return true; // no joints: the missing joints are reported elsewhere
+        }
+
+        if (rows.Any(r => r.Count != n || r.Any(v => !double.IsFinite(v))))
+        {
+            return true; // a bad coefficient is reported where it stands
+        }
+
+        var m = rows.Select(r => r.ToArray()).ToArray();
+        var scale = m.Max(r => r.Max(Math.Abs));
+        for (var col = 0; col < n; col++)
+        {
+            var pivot = col;
+            for (var r = col + 1; r < n; r++)
+            {
+                if (Math.Abs(m[r][col]) > Math.Abs(m[pivot][col]))
+                {
+                    pivot = r;
+                }
+            }
+
+            if (Math.Abs(m[pivot][col]) <= 1e-9 * scale)
+            {
+                return false;
+            }
+
+            (m[col], m[pivot]) = (m[pivot], m[col]);
+            for (var r = col + 1; r < n; r++)
+            {
+                var f = m[r][col] / m[col][col];
+                for (var c = col; c < n; c++)
+                {
+                    m[r][c] -= f * m[col][c];
+                }
+            }
+        }
+
+        return true;
     }
 
     private static ToolDefinition? ReadTool(JsonFieldReader? t)

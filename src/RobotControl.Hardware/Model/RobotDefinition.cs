@@ -86,6 +86,9 @@ public sealed class RobotDefinition
     /// <summary>Gearhead series from the component catalogues the file references.</summary>
     public IReadOnlyList<GearheadDefinition> Gearheads { get; }
 
+    /// <summary>The motor-control modules and bus settings (the file's <c>modules</c> section; empty without one).</summary>
+    public ModuleLayout Modules { get; internal init; } = ModuleLayout.Empty;
+
     /// <summary>Number of kinematic joints.</summary>
     public int JointCount => Joints.Count;
 

@@ -1,0 +1,139 @@
+using System.Globalization;
+using System.Text.Json;
+using RobotControl.Hardware.Loading;
+using RobotControl.Kinematics.Forward;
+using RobotControl.Kinematics.Inverse;
+
+namespace RobotControl.Bench.Ik;
+
+/// <summary>
+/// <c>ik --robot FILE [--samples N] [--seed S] [--json OUT] [--baseline-samples M] [--tracking-steps T] [--axes all|z|none]
+/// [--no-kdl] [--no-baseline] [--repeat K]</c>: the same random reachable targets to our solver, the reference-design baseline and Orocos KDL.
+/// </summary>
+internal sealed class IkBenchCommand : IBenchCommand
+{
+    private static readonly JsonSerializerOptions JsonOptions = new() { WriteIndented = true };
+
+    public string Name => "ik";
+
+    public string Description => "inverse kinematics: ours vs the reference-design baseline vs Orocos KDL (JSON)";
+
+    public int Run(string[] args)
+    {
+        var options = IkBenchOptions.Parse(args);
+        if (options is null)
+        {
+            Console.Error.WriteLine("usage: ik --robot FILE [--samples N] [--seed S] [--json OUT] [--baseline-samples M] [--tracking-steps T] [--axes all|z|none] [--no-kdl] [--no-baseline] [--repeat K]");
+            return 2;
+        }
+
+        var robot = RobotLoader.Load(options.Robot);
+        var chain = new KinematicChain(robot);
+        var axes = options.Axes ?? (chain.JointCount >= 5 ? OrientationAxes.All : OrientationAxes.Z);
+        var ikOptions = new IkOptions();
+        var check = new SolveCheck(chain, ikOptions.PositionToleranceMm, ikOptions.OrientationToleranceRad);
+        var targets = IkTargetSet.Random(chain, options.Samples, options.Seed, axes);
+        Console.Error.WriteLine($"{robot.Name}: {options.Samples} targets (axes {axes}), seed {options.Seed}");
+
+        var loadBefore = LoadAverage();
+        var solvers = new List<SolverStats>();
+        var (ours, bytesPerSolve) = OurSolverRun.Random(targets, check, ikOptions, options.Repeat);
+        solvers.Add(ours);
+        Print(ours);
+
+        var trajectory = IkTargetSet.Trajectory(chain, options.TrackingSteps, options.Seed, axes, 1.0);
+        var (tracking, trackingBytes) = OurSolverRun.Tracking(trajectory, check, ikOptions, options.Repeat);
+        Print(tracking);
+
+        if (options.BaselineSamples > 0)
+        {
+            var baseline = ReferenceIkRun.Random(targets, Math.Min(options.BaselineSamples, options.Samples), check);
+            solvers.Add(baseline);
+            Print(baseline);
+        }
+
+        var kdlNote = "skipped (--no-kdl)";
+        if (options.Kdl)
+        {
+            var kdl = KdlRunner.Run(targets, check, options.Repeat, out kdlNote);
+            foreach (var stats in kdl)
+            {
+                solvers.Add(stats);
+                Print(stats);
+            }
+
+            if (kdl.Count == 0)
+            {
+                Console.Error.WriteLine($"KDL: {kdlNote}");
+            }
+        }
+
+        if (options.Json is not null)
+        {
+            var document = new
+            {
+                robot = robot.Name,
+                samples = options.Samples,
+                seed = options.Seed,
+                timing = $"wall time per solve (Stopwatch), fastest of {options.Repeat} passes per target for ours and KDL, 1 pass for the baseline; mean_cpu_us: thread CPU time of one untimed pass / samples",
+                axes = axes.ToString(),
+                tolerance = new { position_mm = ikOptions.PositionToleranceMm, orientation_rad = ikOptions.OrientationToleranceRad },
+                solvers = solvers.Select(s => new
+                {
+                    name = s.Name,
+                    samples = s.Samples,
+                    solve_rate = s.SolveRate,
+                    mean_us = s.MeanUs,
+                    median_us = s.MedianUs,
+                    p99_us = s.P99Us,
+                    mean_cpu_us = double.IsFinite(s.MeanCpuUs) ? s.MeanCpuUs : (double?)null,
+                    note = s.Note,
+                }),
+                tracking = new
+                {
+                    steps = trajectory.Targets.Length,
+                    solve_rate = tracking.SolveRate,
+                    mean_us = tracking.MeanUs,
+                    median_us = tracking.MedianUs,
+                    p99_us = tracking.P99Us,
+                    mean_cpu_us = tracking.MeanCpuUs,
+                    note = tracking.Note,
+                },
+                allocation = new
+                {
+                    bytes_per_solve = bytesPerSolve,
+                    tracking_bytes_per_solve = trackingBytes,
+                    method = "GC.GetAllocatedBytesForCurrentThread around the timed loop; BenchmarkDotNet [MemoryDiagnoser]: run `-- ik-alloc`",
+                },
+                kdl = kdlNote,
+                host = new { processors = Environment.ProcessorCount, load_average_before = loadBefore, load_average_after = LoadAverage() },
+            };
+            File.WriteAllText(options.Json, JsonSerializer.Serialize(document, JsonOptions));
+            Console.Error.WriteLine($"wrote {options.Json}");
+        }
+
+        return 0;
+    }
+
+    /// <summary>1-minute load average (Linux), so a reader can tell a busy machine's numbers from a quiet one's.</summary>
+    private static double? LoadAverage()
+    {
+        try
+        {
+            var text = File.ReadAllText("/proc/loadavg");
+            return double.Parse(text.Split(' ')[0], CultureInfo.InvariantCulture);
+        }
+        catch (IOException)
+        {
+            return null;
+        }
+        catch (UnauthorizedAccessException)
+        {
+            return null;
+        }
+    }
+
+    private static void Print(SolverStats s) =>
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"{s.Name,-44} n={s.Samples,6} rate={100 * s.SolveRate,8:F3} %  mean={s.MeanUs,10:F2} us  median={s.MedianUs,10:F2} us  p99={s.P99Us,10:F2} us  cpu mean={s.MeanCpuUs,9:F2} us {s.Note}"));
+}

@@ -1,0 +1,66 @@
+using System.Globalization;
+using RobotControl.Kinematics.Inverse;
+
+namespace RobotControl.Bench.Ik;
+
+/// <summary>Command-line options of the ik benchmark.</summary>
+internal sealed record IkBenchOptions(
+    string Robot,
+    int Samples,
+    ulong Seed,
+    string? Json,
+    int BaselineSamples,
+    int TrackingSteps,
+    OrientationAxes? Axes,
+    bool Kdl,
+    int Repeat)
+{
+    public static IkBenchOptions? Parse(string[] args)
+    {
+        string? robot = null;
+        string? json = null;
+        var samples = 10_000;
+        ulong seed = 1;
+        int? baseline = null;
+        var tracking = 10_000;
+        OrientationAxes? axes = null;
+        var kdl = true;
+        var noBaseline = false;
+        var repeat = 3;
+        for (var i = 0; i < args.Length; i++)
+        {
+            string Next() => i + 1 < args.Length ? args[++i] : throw new ArgumentException($"{args[i]} needs a value");
+            switch (args[i])
+            {
+                case "--robot": robot = Next(); break;
+                case "--samples": samples = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--seed": seed = ulong.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--json": json = Next(); break;
+                case "--baseline-samples": baseline = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--tracking-steps": tracking = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--axes":
+                    axes = Next() switch
+                    {
+                        "all" => OrientationAxes.All,
+                        "z" => OrientationAxes.Z,
+                        "none" => OrientationAxes.None,
+                        var other => throw new ArgumentException($"unknown --axes {other}"),
+                    };
+                    break;
+                case "--no-kdl": kdl = false; break;
+                case "--no-baseline": noBaseline = true; break;
+                case "--repeat": repeat = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                default: return null;
+            }
+        }
+
+        if (robot is null || samples < 1)
+        {
+            return null;
+        }
+
+        // The baseline runs up to 15,000 CCD cycles per target; by default it gets the first 1,000 targets.
+        var baselineSamples = noBaseline ? 0 : baseline ?? Math.Min(samples, 1_000);
+        return new IkBenchOptions(robot, samples, seed, json, baselineSamples, Math.Max(tracking, 2), axes, kdl, Math.Max(repeat, 1));
+    }
+}

@@ -1,0 +1,102 @@
+/* A motor module: control table, protocol handling, control loop, persistence.
+ * Everything lives in rcfw_module; the core has no global state. */
+#ifndef RCFW_MODULE_H
+#define RCFW_MODULE_H
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "rcfw/frame.h"
+#include "rcfw/motor.h"
+#include "rcfw/store.h"
+#include "rcfw_ct_gen.h"
+
+#define RCFW_CONTROL_RATE_HZ 10000u
+#define RCFW_FIRMWARE_VERSION 1u
+#define RCFW_RX_TIMEOUT_TICKS 20u   /* 2 ms of silence inside a frame drops it */
+#define RCFW_RUNTIME_SAVE_TICKS 10u /* position/goal record at most every 1 ms */
+
+/* hardware_error_status bits */
+#define RCFW_HWERR_OVERCURRENT 0x01u
+#define RCFW_HWERR_HALL 0x02u
+#define RCFW_HWERR_POT_MISMATCH 0x04u
+#define RCFW_HWERR_BUS_WATCHDOG 0x08u
+#define RCFW_HWERR_PARAMS_LOST 0x10u
+#define RCFW_HWERR_POSITION_LOST 0x20u
+
+/* reset_cause values */
+#define RCFW_CAUSE_POWER_ON 1u
+#define RCFW_CAUSE_BROWN_OUT 2u
+#define RCFW_CAUSE_WATCHDOG 3u
+#define RCFW_CAUSE_SOFTWARE 4u
+#define RCFW_CAUSE_PIN 5u
+#define RCFW_CAUSE_LOCKUP 6u
+
+/* FRAM map */
+#define RCFW_FRAM_PARAMS_A 0x000u
+#define RCFW_FRAM_PARAMS_B 0x100u
+#define RCFW_FRAM_RUNTIME_A 0x200u
+#define RCFW_FRAM_RUNTIME_B 0x240u
+#define RCFW_FRAM_USED 0x280u
+#define RCFW_PARAMS_MAGIC 0x5052u  /* "RP" */
+#define RCFW_RUNTIME_MAGIC 0x5352u /* "RS" */
+#define RCFW_RUNTIME_LEN (RCFW_CT_MAX_MOTORS * 8u)
+
+#define RCFW_TX_MAX 512u
+
+typedef struct {
+    uint32_t rx_frames;    /* valid frames (any ID) */
+    uint32_t rx_bad_crc;
+    uint32_t rx_bad_len;   /* too short, too long, truncated (resync or timeout) */
+    uint32_t rx_bad_stuff;
+    uint32_t bad_requests; /* valid frames refused (range, access, limit, length) */
+    uint32_t fram_errors;
+} rcfw_stats;
+
+typedef struct rcfw_module {
+    struct rcfw_port *port;
+    _Alignas(4) uint8_t ct[RCFW_CT_SIZE];
+    rcfw_motor motor[RCFW_CT_MAX_MOTORS];
+    uint8_t hall_last[RCFW_CT_MAX_MOTORS];
+    uint8_t n_motors;
+    uint8_t ema_k;
+    uint8_t limit_step;
+    uint8_t reboot_pending;
+    uint8_t baud_pending;
+    uint8_t runtime_due;
+    uint16_t runtime_div;
+    uint16_t rx_idle_ticks;
+    uint32_t wd_ticks;
+    uint32_t wd_limit_ticks;
+    rcfw_store params;
+    rcfw_store runtime;
+    uint8_t runtime_saved[RCFW_RUNTIME_LEN];
+    rcfw_parser rx;
+    uint8_t body[RCFW_CT_SIZE + 8u];
+    uint8_t tx[RCFW_TX_MAX];
+    rcfw_stats stats;
+} rcfw_module;
+
+/* Start (or restart after any reset) a module: load parameters and position from FRAM,
+ * home/check against the pots, record the reset cause. n_motors 1..4. */
+void rcfw_module_init(rcfw_module *m, struct rcfw_port *port, uint8_t n_motors, uint8_t reset_cause);
+/* Copy the motors' state (present_*, hall_error_count, motor_error, present_setpoint) into
+ * the control table. Done before every READ / SYNC READ; the tick does not pay for it. */
+void rcfw_module_publish(rcfw_module *m);
+/* Control period (RCFW_CONTROL_RATE_HZ), timer interrupt context. */
+void rcfw_module_tick(rcfw_module *m);
+/* Hall pin change of one motor (pin interrupt context, same priority as the tick). */
+void rcfw_module_hall_edge(rcfw_module *m, uint8_t motor);
+/* One received UART byte (main context, with the tick masked while a frame is handled). */
+void rcfw_module_rx_byte(rcfw_module *m, uint8_t byte);
+/* Main-loop housekeeping: runtime record to FRAM, pending baud change. */
+void rcfw_module_poll(rcfw_module *m);
+/* True once after a reboot / factory reset instruction has been answered: the port resets. */
+bool rcfw_module_take_reboot(rcfw_module *m);
+/* Local table access (same checks as a bus WRITE; persistent changes are saved).
+ * Returns 0 or an RCFW_ERR_* code. */
+uint8_t rcfw_module_write(rcfw_module *m, uint16_t addr, const uint8_t *data, uint16_t len);
+uint32_t rcfw_module_baud_bps(const rcfw_module *m);
+uint32_t rcfw_baud_code_bps(uint8_t code);
+/* Potentiometer reading -> Hall position by the calibration table; false if uncalibrated. */
+bool rcfw_pot_to_position(const rcfw_module *m, uint8_t motor, uint16_t raw, int32_t *pos);
+#endif

@@ -1,0 +1,86 @@
+using RobotControl.Plugins.Touch.Backends;
+
+namespace RobotControl.Plugins.Touch.Simulation;
+
+/// <summary>
+/// A simulated Touch: a hand follows a <see cref="HandScript"/> holding the stylus through a <see cref="HandModel"/>,
+/// so forces sent to the device visibly push the handle. Runs on the loop thread from the tick time: deterministic.
+/// </summary>
+public sealed class SimulatedTouchBackend : ITouchBackend
+{
+    private readonly HandScript _script;
+    private readonly HandModel _hand;
+    private readonly double _maxForceN;
+    private readonly double _timeOffset;
+    private readonly bool _repeat;
+    private readonly double[] _pose = new double[6];
+    private readonly double[] _handVelocity = new double[3];
+    private double _lastTime = double.NaN;
+    private int _hint;
+
+    /// <summary>Creates the back end.</summary>
+    public SimulatedTouchBackend(HandScript script, HandModel hand, double maxForceN, double timeOffsetSeconds = 0, bool repeat = false)
+    {
+        ArgumentNullException.ThrowIfNull(script);
+        ArgumentNullException.ThrowIfNull(hand);
+        _script = script;
+        _hand = hand;
+        _maxForceN = maxForceN;
+        _timeOffset = timeOffsetSeconds;
+        _repeat = repeat;
+    }
+
+    /// <inheritdoc />
+    public string Description => $"simulated Touch ({_script.Count} keyframes, {_script.DurationSeconds:0.###} s)";
+
+    /// <summary>The hand model (for tests and displays).</summary>
+    public HandModel Hand => _hand;
+
+    /// <inheritdoc />
+    public void Open()
+    {
+        _lastTime = double.NaN;
+        _hint = 0;
+    }
+
+    /// <inheritdoc />
+    public TouchSample Exchange(double timeSeconds, in TouchForce force)
+    {
+        var t = ScriptTime(timeSeconds + _timeOffset);
+        _script.Sample(t, _pose, _handVelocity, out var button1, out var button2, ref _hint);
+        if (double.IsNaN(_lastTime))
+        {
+            _hand.Reset(_pose);
+        }
+        else
+        {
+            var (fx, fy, fz) = Limit(force);
+            _hand.Step(timeSeconds - _lastTime, _pose, _handVelocity, fx, fy, fz);
+        }
+
+        _lastTime = timeSeconds;
+        var p = _hand.Position;
+        return new TouchSample(p[0], p[1], p[2], _pose[3], _pose[4], _pose[5], button1, button2);
+    }
+
+    /// <inheritdoc />
+    public void Dispose()
+    {
+    }
+
+    private double ScriptTime(double t) =>
+        _repeat && t > _script.DurationSeconds ? t % _script.DurationSeconds : t;
+
+    private (double X, double Y, double Z) Limit(in TouchForce force)
+    {
+        // The device cannot render non-finite or excessive forces: drop the former, scale the latter down.
+        if (!double.IsFinite(force.XN) || !double.IsFinite(force.YN) || !double.IsFinite(force.ZN))
+        {
+            return (0, 0, 0);
+        }
+
+        var magnitude = Math.Sqrt((force.XN * force.XN) + (force.YN * force.YN) + (force.ZN * force.ZN));
+        var scale = magnitude > _maxForceN ? _maxForceN / magnitude : 1.0;
+        return (force.XN * scale, force.YN * scale, force.ZN * scale);
+    }
+}

@@ -1,0 +1,343 @@
+using System.Buffers.Binary;
+using RobotControl.Bus.Protocol;
+using RobotControl.Bus.Transports;
+
+namespace RobotControl.Bus.Client;
+
+/// <summary>
+/// The host end of the module bus: Dynamixel-2.0 requests with timeouts and retries, sync write / sync read for the
+/// per-cycle exchange, broadcast discovery and per-module statistics. Time comes from the given
+/// <see cref="TimeProvider"/>. After construction no request allocates. One thread uses a client at a time.
+/// </summary>
+public sealed class BusClient : IDisposable
+{
+    private const int MaxId = 252;
+    private readonly IByteLink _link;
+    private readonly TimeProvider _time;
+    private readonly BusClientOptions _options;
+    private readonly FrameDecoder _decoder = new();
+    private readonly byte[] _tx = new byte[FrameConstants.MaxFrameSize * 2];
+    private readonly byte[] _rx = new byte[512];
+    private readonly byte[] _params = new byte[FrameConstants.MaxFrameSize];
+    private readonly ModuleStatistics[] _stats = new ModuleStatistics[256];
+    private int _rxCount;
+    private int _rxUsed;
+    private long _strayFrames;
+    private long _wireFreeAt;
+
+    /// <summary>
+    /// Creates a client on <paramref name="link"/> (owned and disposed by the client), timing on the link's own clock
+    /// when it has one (<see cref="IClockedLink"/>, the virtual bus) and on the system clock otherwise.
+    /// </summary>
+    public BusClient(IByteLink link, BusClientOptions? options = null)
+        : this(link, (link as IClockedLink)?.Clock ?? TimeProvider.System, options)
+    {
+    }
+
+    /// <summary>Creates a client on <paramref name="link"/> (the client owns and disposes it).</summary>
+    public BusClient(IByteLink link, TimeProvider time, BusClientOptions? options = null)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        ArgumentNullException.ThrowIfNull(time);
+        _link = link;
+        _time = time;
+        _options = options ?? new BusClientOptions();
+        for (var i = 0; i < _stats.Length; i++)
+        {
+            _stats[i] = new ModuleStatistics((byte)i, time.TimestampFrequency);
+        }
+
+        ByteTime = TimeSpan.FromTicks(Math.Max(1, 10 * TimeSpan.TicksPerSecond / link.BaudRate));
+    }
+
+    /// <summary>The link the client talks through.</summary>
+    public IByteLink Link => _link;
+
+    /// <summary>The clock timeouts and latencies are measured on.</summary>
+    public TimeProvider Time => _time;
+
+    /// <summary>Wire time of one byte (start, 8 data, stop bits).</summary>
+    public TimeSpan ByteTime { get; }
+
+    /// <summary>Frames dropped by the decoder because of a bad CRC (all modules).</summary>
+    public long CrcErrors => _decoder.CrcErrors;
+
+    /// <summary>Valid frames that nobody asked for (wrong ID, late replies).</summary>
+    public long StrayFrames => _strayFrames;
+
+    /// <summary>Counters of one module.</summary>
+    public ModuleStatistics Statistics(byte id) => _stats[id];
+
+    /// <summary>Pings one module.</summary>
+    public Reply Ping(byte id, out PingInfo info)
+    {
+        info = default;
+        var reply = Transact(id, Instruction.Ping, ReadOnlySpan<byte>.Empty, 3);
+        if (reply.Outcome == ReplyOutcome.Ok)
+        {
+            var p = _decoder.Parameters;
+            info = new PingInfo(id, BinaryPrimitives.ReadUInt16LittleEndian(p), p[2]);
+        }
+
+        return reply;
+    }
+
+    /// <summary>
+    /// Broadcast ping: every module answers; returns how many answered (up to <paramref name="found"/>'s length), in
+    /// the order they answered. Listens until no answer came for <see cref="BusClientOptions.DiscoveryWindow"/>.
+    /// </summary>
+    public int Discover(Span<PingInfo> found)
+    {
+        Send(FrameConstants.BroadcastId, Instruction.Ping, ReadOnlySpan<byte>.Empty);
+        var count = 0;
+        var deadline = _time.GetTimestamp() + Ticks(_options.DiscoveryWindow);
+        while (NextFrame(deadline))
+        {
+            if (_decoder.IsStatus && _decoder.Parameters.Length >= 3 && count < found.Length)
+            {
+                var p = _decoder.Parameters;
+                found[count++] = new PingInfo(_decoder.Id, BinaryPrimitives.ReadUInt16LittleEndian(p), p[2]);
+                _stats[_decoder.Id].Received(0);
+                deadline = _time.GetTimestamp() + Ticks(_options.DiscoveryWindow);
+            }
+        }
+
+        return count;
+    }
+
+    /// <summary>Reads <paramref name="data"/>.Length bytes from <paramref name="address"/> of module <paramref name="id"/>.</summary>
+    public Reply Read(byte id, ushort address, Span<byte> data)
+    {
+        Span<byte> p = stackalloc byte[4];
+        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
+        BinaryPrimitives.WriteUInt16LittleEndian(p[2..], (ushort)data.Length);
+        var reply = Transact(id, Instruction.Read, p, data.Length);
+        if (reply.Outcome == ReplyOutcome.Ok)
+        {
+            _decoder.Parameters.CopyTo(data);
+        }
+
+        return reply;
+    }
+
+    /// <summary>Writes <paramref name="data"/> at <paramref name="address"/> of module <paramref name="id"/> and waits for the acknowledgement.</summary>
+    public Reply Write(byte id, ushort address, ReadOnlySpan<byte> data)
+    {
+        var p = _params.AsSpan(0, 2 + data.Length);
+        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
+        data.CopyTo(p[2..]);
+        return Transact(id, Instruction.Write, p, 0);
+    }
+
+    /// <summary>Writes without waiting for a reply (broadcast writes get none).</summary>
+    public void WriteNoReply(byte id, ushort address, ReadOnlySpan<byte> data)
+    {
+        var p = _params.AsSpan(0, 2 + data.Length);
+        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
+        data.CopyTo(p[2..]);
+        Send(id, Instruction.Write, p);
+    }
+
+    /// <summary>Restarts a module (it answers before restarting).</summary>
+    public Reply Reboot(byte id) => Transact(id, Instruction.Reboot, ReadOnlySpan<byte>.Empty, 0);
+
+    /// <summary>Restores a module's factory parameters (<paramref name="option"/>: 0xFF all, 0x01 all but ID, 0x02 all but ID and baud).</summary>
+    public Reply FactoryReset(byte id, byte option = 0x02) => Transact(id, Instruction.FactoryReset, [option], 0);
+
+    /// <summary>
+    /// Sync write: the same <paramref name="length"/> bytes at <paramref name="address"/> of every module in
+    /// <paramref name="ids"/>, their data back to back in <paramref name="data"/>. No module replies.
+    /// </summary>
+    public void SyncWrite(ushort address, int length, ReadOnlySpan<byte> ids, ReadOnlySpan<byte> data)
+    {
+        if (data.Length != ids.Length * length)
+        {
+            throw new ArgumentException($"sync write needs {ids.Length * length} data bytes, got {data.Length}", nameof(data));
+        }
+
+        var p = _params.AsSpan(0, 4 + ids.Length * (1 + length));
+        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
+        BinaryPrimitives.WriteUInt16LittleEndian(p[2..], (ushort)length);
+        var o = 4;
+        for (var i = 0; i < ids.Length; i++)
+        {
+            p[o++] = ids[i];
+            data.Slice(i * length, length).CopyTo(p[o..]);
+            o += length;
+            _stats[ids[i]].Sent();
+        }
+
+        Send(FrameConstants.BroadcastId, Instruction.SyncWrite, p, countStatistics: false);
+    }
+
+    /// <summary>
+    /// Sync read of <paramref name="length"/> bytes at <paramref name="address"/> from every module in
+    /// <paramref name="ids"/> into <paramref name="data"/> (back to back). A module that does not answer, or answers
+    /// corrupted, is asked again on its own (up to the retry budget). <paramref name="replies"/> receives each
+    /// module's outcome. Returns how many modules answered.
+    /// </summary>
+    public int SyncRead(ushort address, int length, ReadOnlySpan<byte> ids, Span<byte> data, Span<Reply> replies)
+    {
+        if (data.Length < ids.Length * length || replies.Length < ids.Length)
+        {
+            throw new ArgumentException("sync read buffers are too small for the modules listed");
+        }
+
+        var p = _params.AsSpan(0, 4 + ids.Length);
+        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
+        BinaryPrimitives.WriteUInt16LittleEndian(p[2..], (ushort)length);
+        ids.CopyTo(p[4..]);
+        for (var i = 0; i < ids.Length; i++)
+        {
+            replies[i] = Reply.TimedOut;
+            _stats[ids[i]].Sent();
+        }
+
+        var requestBytes = FrameConstants.Overhead + 4 + ids.Length;
+        var replyBytes = FrameConstants.Overhead + 1 + length;
+        var sentAt = Send(FrameConstants.BroadcastId, Instruction.SyncRead, p, countStatistics: false);
+        // Modules answer in turn; allow each reply its worst-case stuffing (a third of the data) and a small gap.
+        var deadline = sentAt + Ticks(WireTime(requestBytes + (ids.Length * (replyBytes + (length / 3) + 2)))) + (ids.Length * Ticks(_options.ResponseMargin));
+        var answered = 0;
+        while (answered < ids.Length && NextFrame(deadline))
+        {
+            var index = ids.IndexOf(_decoder.Id);
+            if (index < 0 || !_decoder.IsStatus || replies[index].Outcome == ReplyOutcome.Ok)
+            {
+                _strayFrames++;
+                continue;
+            }
+
+            var stats = _stats[_decoder.Id];
+            stats.Received(_time.GetTimestamp() - sentAt);
+            if (_decoder.Error != 0)
+            {
+                stats.ErrorReply();
+            }
+
+            if (_decoder.Parameters.Length != length)
+            {
+                replies[index] = new Reply(ReplyOutcome.BadLength, _decoder.Error);
+                continue;
+            }
+
+            _decoder.Parameters.CopyTo(data.Slice(index * length, length));
+            replies[index] = new Reply(ReplyOutcome.Ok, _decoder.Error);
+            answered++;
+        }
+
+        // Ask the missing ones individually.
+        for (var i = 0; i < ids.Length && answered < ids.Length; i++)
+        {
+            if (replies[i].Outcome == ReplyOutcome.Ok)
+            {
+                continue;
+            }
+
+            _stats[ids[i]].Timeout();
+            _stats[ids[i]].Retry();
+            replies[i] = Read(ids[i], address, data.Slice(i * length, length));
+            if (replies[i].Outcome == ReplyOutcome.Ok)
+            {
+                answered++;
+            }
+        }
+
+        return answered;
+    }
+
+    /// <summary>Wire time of <paramref name="bytes"/> bytes at the link's baud.</summary>
+    public TimeSpan WireTime(int bytes) => TimeSpan.FromTicks(ByteTime.Ticks * bytes);
+
+    /// <inheritdoc />
+    public void Dispose() => _link.Dispose();
+
+    private Reply Transact(byte id, Instruction instruction, ReadOnlySpan<byte> parameters, int replyParameterCount)
+    {
+        var stats = _stats[id];
+        var requestBytes = FrameConstants.Overhead + parameters.Length;
+        var replyBytes = FrameConstants.Overhead + 1 + replyParameterCount;
+        for (var attempt = 0; ; attempt++)
+        {
+            var crcBefore = _decoder.CrcErrors;
+            var sentAt = Send(id, instruction, parameters);
+            var deadline = sentAt + Ticks(WireTime(requestBytes + replyBytes) + _options.ResponseMargin);
+            while (NextFrame(deadline))
+            {
+                if (_decoder.Id != id || !_decoder.IsStatus)
+                {
+                    _strayFrames++;
+                    continue;
+                }
+
+                stats.Received(_time.GetTimestamp() - sentAt);
+                if (_decoder.Error != 0)
+                {
+                    stats.ErrorReply();
+                }
+
+                return _decoder.Parameters.Length == replyParameterCount || (_decoder.Error & 0x7F) != 0
+                    ? new Reply(ReplyOutcome.Ok, _decoder.Error)
+                    : new Reply(ReplyOutcome.BadLength, _decoder.Error);
+            }
+
+            if (_decoder.CrcErrors != crcBefore)
+            {
+                stats.CrcError();
+            }
+
+            stats.Timeout();
+            if (attempt >= _options.Retries)
+            {
+                return Reply.TimedOut;
+            }
+
+            stats.Retry();
+        }
+    }
+
+    /// <summary>Sends a frame; returns the timestamp at which it starts on the wire.</summary>
+    private long Send(byte id, Instruction instruction, ReadOnlySpan<byte> parameters, bool countStatistics = true)
+    {
+        // Forget anything half-received: a late reply must not be taken for the answer to this request.
+        _decoder.Reset();
+        _rxCount = _rxUsed = 0;
+        var n = FrameEncoder.EncodeInstruction(_tx, id, instruction, parameters);
+
+        // A write returns once the bytes are queued; the frame starts on the wire when the ones before it are out,
+        // and reply deadlines count from there.
+        var now = Math.Max(_time.GetTimestamp(), _wireFreeAt);
+        _wireFreeAt = now + Ticks(WireTime(n));
+        _link.Write(_tx.AsSpan(0, n));
+        if (countStatistics && id != FrameConstants.BroadcastId)
+        {
+            _stats[id].Sent();
+        }
+
+        return now;
+    }
+
+    /// <summary>Reads until the decoder yields a frame or the deadline (a timestamp) passes.</summary>
+    private bool NextFrame(long deadline)
+    {
+        while (true)
+        {
+            if (_decoder.Push(_rx.AsSpan(_rxUsed, _rxCount - _rxUsed), out var used))
+            {
+                _rxUsed += used;
+                return true;
+            }
+
+            _rxUsed = _rxCount = 0;
+            var remaining = deadline - _time.GetTimestamp();
+            if (remaining <= 0)
+            {
+                return false;
+            }
+
+            _rxCount = _link.Read(_rx, TimeSpan.FromTicks(remaining * TimeSpan.TicksPerSecond / _time.TimestampFrequency));
+        }
+    }
+
+    private long Ticks(TimeSpan span) => span.Ticks * _time.TimestampFrequency / TimeSpan.TicksPerSecond;
+}

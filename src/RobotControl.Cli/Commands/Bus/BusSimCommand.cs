@@ -1,0 +1,86 @@
+using System.CommandLine;
+using RobotControl.Bus.Transports;
+using RobotControl.Bus.Transports.Serial;
+using RobotControl.Hardware.Loading;
+using RobotControl.Simulation;
+using RobotControl.Simulation.Time;
+
+namespace RobotControl.Cli.Commands.Bus;
+
+/// <summary>
+/// <c>robotctl bus-sim &lt;robot file&gt; --pty</c>: presents a virtual robot's bus (every module running the real
+/// firmware) on a pseudo-terminal, in real time, until interrupted; <c>--device</c> serves an existing tty instead
+/// (e.g. one end of a socat pty pair).
+/// </summary>
+internal sealed class BusSimCommand : ICliCommand
+{
+    /// <inheritdoc />
+    public Command Build()
+    {
+        var robot = new Argument<FileInfo>("robot") { Description = "Robot data file with a modules section, e.g. hardware/robots/lb-1.0.json" };
+        var pty = new Option<bool>("--pty") { Description = "Create a pseudo-terminal and print its path" };
+        var device = new Option<string?>("--device") { Description = "Serve an existing tty instead (e.g. a socat pty end)" };
+        var seed = new Option<int>("--seed") { Description = "Seed of the sensor noise", DefaultValueFactory = _ => 1 };
+        var seconds = new Option<double>("--seconds") { Description = "Stop after this many seconds (0: until Ctrl+C)", DefaultValueFactory = _ => 0 };
+        var command = new Command("bus-sim", "Expose a virtual robot's module bus on a pty (real firmware, simulated motors).");
+        command.Arguments.Add(robot);
+        foreach (var o in new Option[] { pty, device, seed, seconds })
+        {
+            command.Options.Add(o);
+        }
+
+        command.SetAction(parse =>
+        {
+            var output = parse.InvocationConfiguration.Output;
+            var error = parse.InvocationConfiguration.Error;
+            try
+            {
+                var definition = RobotLoader.Load(parse.GetValue(robot)!.FullName);
+                using var sim = new VirtualRobot(definition, new ManualTimeProvider(), new VirtualRobotOptions { Seed = parse.GetValue(seed) });
+                IByteLink port;
+                if (parse.GetValue(device) is { } path)
+                {
+                    port = PosixSerialLink.Open(path, sim.BaudRate);
+                    output.WriteLine($"serving {definition.Name} on {path}");
+                }
+                else if (parse.GetValue(pty))
+                {
+                    var terminal = PseudoTerminal.Create();
+                    port = terminal;
+                    output.WriteLine($"serving {definition.Name} ({definition.Modules.Modules.Count} modules, ids {string.Join(",", definition.Modules.Modules.Select(m => m.Id))}) on serial:{terminal.SlavePath}?baud={sim.BaudRate}");
+                }
+                else
+                {
+                    error.WriteLine("give --pty or --device <tty>");
+                    return 2;
+                }
+
+                output.Flush();
+                using (port)
+                using (var stop = new CancellationTokenSource())
+                {
+                    Console.CancelKeyPress += (_, e) =>
+                    {
+                        e.Cancel = true;
+                        stop.Cancel();
+                    };
+                    if (parse.GetValue(seconds) > 0)
+                    {
+                        stop.CancelAfter(TimeSpan.FromSeconds(parse.GetValue(seconds)));
+                    }
+
+                    sim.Serve(port, stop.Token);
+                }
+
+                output.WriteLine($"stopped after {sim.Elapsed.TotalSeconds:F1} s simulated ({sim.SlippedTime.TotalMilliseconds:F0} ms slipped behind real time)");
+                return 0;
+            }
+            catch (Exception ex) when (ex is IOException or RobotDataException or ArgumentException)
+            {
+                error.WriteLine(ex.Message);
+                return 2;
+            }
+        });
+        return command;
+    }
+}

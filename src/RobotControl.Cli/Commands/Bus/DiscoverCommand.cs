@@ -1,0 +1,59 @@
+using System.CommandLine;
+
+namespace RobotControl.Cli.Commands.Bus;
+
+/// <summary>
+/// <c>robotctl discover &lt;transport&gt; [--robot file]</c>: broadcast-pings the bus; with a robot file, reports
+/// missing, unknown and mismatched modules and parameters that differ from the file. Exit 1 when anything differs.
+/// </summary>
+internal sealed class DiscoverCommand : ICliCommand
+{
+    /// <inheritdoc />
+    public Command Build()
+    {
+        var transport = BusOptions.Transport();
+        var robot = BusOptions.Robot();
+        var margin = BusOptions.MarginMs();
+        var command = new Command("discover", "Find the modules on a bus and compare them with the robot file.");
+        command.Arguments.Add(transport);
+        command.Options.Add(robot);
+        command.Options.Add(margin);
+        command.SetAction(parse =>
+        {
+            var output = parse.InvocationConfiguration.Output;
+            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            {
+                if (session.Robot is null)
+                {
+                    var found = new RobotControl.Bus.Client.PingInfo[253];
+                    var n = session.Client.Discover(found);
+                    foreach (var p in found.AsSpan(0, n))
+                    {
+                        output.WriteLine($"id {p.Id,3}  model {p.ModelNumber}  firmware {p.FirmwareVersion}");
+                    }
+
+                    output.WriteLine($"{n} module(s) answered on {session.Client.Link.Description}");
+                    return 0;
+                }
+
+                var report = session.Robot.Discover();
+                foreach (var line in report.Lines())
+                {
+                    output.WriteLine(line);
+                }
+
+                var mismatches = session.Robot.CheckParameters();
+                foreach (var m in mismatches)
+                {
+                    output.WriteLine($"PARAM    {m}");
+                }
+
+                output.WriteLine(report.AllAsConfigured && mismatches.Count == 0
+                    ? $"all {report.Present.Count} modules as configured"
+                    : $"{report.Missing.Count} missing, {report.Unknown.Count} unknown, {report.Mismatched.Count} mismatched, {mismatches.Count} parameters differ");
+                return report.AllAsConfigured && mismatches.Count == 0 ? 0 : 1;
+            });
+        });
+        return command;
+    }
+}

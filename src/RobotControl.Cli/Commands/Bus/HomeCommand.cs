@@ -1,0 +1,40 @@
+using System.CommandLine;
+
+namespace RobotControl.Cli.Commands.Bus;
+
+/// <summary><c>robotctl home &lt;transport&gt;</c>: homes every motor from its pot and prints pot and position side by side.</summary>
+internal sealed class HomeCommand : ICliCommand
+{
+    /// <inheritdoc />
+    public Command Build()
+    {
+        var transport = BusOptions.Transport();
+        var robot = BusOptions.Robot();
+        var margin = BusOptions.MarginMs();
+        var command = new Command("home", "Home every motor from its joint potentiometer.");
+        command.Arguments.Add(transport);
+        command.Options.Add(robot);
+        command.Options.Add(margin);
+        command.SetAction(parse =>
+        {
+            var output = parse.InvocationConfiguration.Output;
+            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            {
+                var bus = session.RequireRobot();
+                var report = bus.Discover();
+                foreach (var line in report.Lines().Where(l => !l.StartsWith("found", StringComparison.Ordinal)))
+                {
+                    output.WriteLine(line);
+                }
+
+                foreach (var r in bus.Home())
+                {
+                    output.WriteLine(r.ToString());
+                }
+
+                return report.Missing.Count == 0 ? 0 : 1;
+            });
+        });
+        return command;
+    }
+}

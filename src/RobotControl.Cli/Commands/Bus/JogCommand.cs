@@ -1,0 +1,61 @@
+using System.CommandLine;
+using System.Globalization;
+
+namespace RobotControl.Cli.Commands.Bus;
+
+/// <summary>
+/// <c>robotctl jog &lt;transport&gt; --motor right.elbow --speed-deg-s 10 --duration-s 1</c>: turns the motors on,
+/// jogs one motor (its axis output) for a while, prints where it went, turns the motors off.
+/// </summary>
+internal sealed class JogCommand : ICliCommand
+{
+    private const double Deg = Math.PI / 180;
+
+    /// <inheritdoc />
+    public Command Build()
+    {
+        var transport = BusOptions.Transport();
+        var robot = BusOptions.Robot();
+        var margin = BusOptions.MarginMs();
+        var motor = new Option<string>("--motor") { Description = "arm.joint, e.g. right.elbow or left.tool_open_close", Required = true };
+        var speed = new Option<double>("--speed-deg-s") { Description = "Axis output speed, deg/s (limited to the motor's speed limit)", DefaultValueFactory = _ => 10 };
+        var duration = new Option<double>("--duration-s") { Description = "How long to jog, s", DefaultValueFactory = _ => 1 };
+        var command = new Command("jog", "Jog one motor at a speed for a time, then stop and report.");
+        command.Arguments.Add(transport);
+        foreach (var o in new Option[] { robot, margin, motor, speed, duration })
+        {
+            command.Options.Add(o);
+        }
+
+        command.SetAction(parse =>
+        {
+            var output = parse.InvocationConfiguration.Output;
+            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            {
+                var bus = session.RequireRobot();
+                var report = bus.Discover();
+                var m = bus.Motor(parse.GetValue(motor)!);
+                if (!m.Controller.Present)
+                {
+                    throw new IOException($"{m}: its module does not answer");
+                }
+
+                bus.EnableTorque(true);
+                var start = m.PositionRad;
+                m.Jog(parse.GetValue(speed) * Deg);
+                bus.RunFor(TimeSpan.FromSeconds(parse.GetValue(duration)));
+                m.Jog(0);
+                bus.RunFor(TimeSpan.FromMilliseconds(300));
+                bus.EnableTorque(false);
+                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{m.Config.FullName}: {start / Deg:F2} deg -> {m.PositionRad / Deg:F2} deg, current {m.CurrentA * 1000:F1} mA, faults {bus.Faults}"));
+                foreach (var e in bus.Events)
+                {
+                    output.WriteLine(e);
+                }
+
+                return report.Missing.Count == 0 ? 0 : 1;
+            });
+        });
+        return command;
+    }
+}

@@ -1,0 +1,169 @@
+using System.CommandLine;
+using System.Globalization;
+using RobotControl.Plugins.Standard.Conditioning;
+using RobotControl.Plugins.Touch;
+using RobotControl.Runtime.Discovery;
+using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.Harness;
+using Spectre.Console;
+
+namespace RobotControl.Cli.Commands.Run;
+
+/// <summary>
+/// <c>robotctl run &lt;graph&gt; [--virtual] [--duration 20s] [--report report.json] [--inject ber=1e-5,reset=right.shoulder@5s]
+/// [--plugins dir] [--seed n]</c>: the headless harness. Loads the graph, runs it against the virtual robot (running
+/// the firmware, on a virtual clock) or the graph's transport, shows progress, prints a summary and writes the report.
+/// </summary>
+internal sealed class RunCommand : ICliCommand
+{
+    /// <inheritdoc />
+    public Command Build()
+    {
+        var graph = new Argument<FileInfo>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json" };
+        var isVirtual = new Option<bool>("--virtual") { Description = "Run against the virtual robot (real firmware, simulated motors) on a virtual clock, deterministically and as fast as possible" };
+        var duration = new Option<string>("--duration") { Description = "Loop time to run, e.g. 20s, 500ms, 2m", DefaultValueFactory = _ => "20s" };
+        var report = new Option<FileInfo?>("--report") { Description = "Write the report (JSON) to this file" };
+        var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: ber=<bit error rate>, reset=<arm.location|id>@<time> (comma-separated)" };
+        var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (one load context each)" };
+        var seed = new Option<int>("--seed") { Description = "Seed of the virtual robot's noise and wire faults", DefaultValueFactory = _ => 1 };
+        var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
+        command.Arguments.Add(graph);
+        command.Options.Add(isVirtual);
+        command.Options.Add(duration);
+        command.Options.Add(report);
+        command.Options.Add(inject);
+        command.Options.Add(plugins);
+        command.Options.Add(seed);
+        command.SetAction(parse => Run(
+            parse.GetValue(graph)!.FullName,
+            parse.GetValue(isVirtual),
+            parse.GetValue(duration)!,
+            parse.GetValue(report)?.FullName,
+            parse.GetValue(inject),
+            parse.GetValue(plugins)?.FullName,
+            parse.GetValue(seed),
+            parse.InvocationConfiguration.Output,
+            parse.InvocationConfiguration.Error));
+        return command;
+    }
+
+    /// <summary>The catalogue of the host's plug-in types (standard and Touch), plus a plug-ins folder.</summary>
+    internal static PluginCatalog Catalog(string? pluginsFolder)
+    {
+        var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
+        if (pluginsFolder is not null)
+        {
+            catalog.AddFolder(pluginsFolder);
+        }
+
+        return catalog;
+    }
+
+    /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
+    internal static int Run(string graphPath, bool isVirtual, string durationText, string? reportPath, string? injectText, string? pluginsFolder, int seed, TextWriter output, TextWriter error)
+    {
+        RunOptions options;
+        try
+        {
+            options = new RunOptions
+            {
+                GraphPath = graphPath,
+                Virtual = isVirtual,
+                Duration = RunDuration.Parse(durationText),
+                Inject = FaultInjection.Parse(injectText),
+                Seed = seed,
+            };
+        }
+        catch (FormatException ex)
+        {
+            error.WriteLine(ex.Message);
+            return 2;
+        }
+
+        var catalog = Catalog(pluginsFolder);
+        foreach (var problem in catalog.Problems)
+        {
+            error.WriteLine($"plug-ins: {problem}");
+        }
+
+        var c = CultureInfo.InvariantCulture;
+        output.WriteLine(string.Create(c, $"run {Path.GetFileName(graphPath)}: {(isVirtual ? "virtual robot (firmware in the loop), virtual clock" : "real time")}, {options.Duration.TotalSeconds:0.###} s, faults: {options.Inject}"));
+        RunReport result;
+        try
+        {
+            var interactive = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected && AnsiConsole.Profile.Capabilities.Interactive;
+            result = interactive ? RunWithProgressBar(options, catalog) : RunWithLines(options, catalog, output);
+        }
+        catch (GraphException ex)
+        {
+            error.WriteLine(ex.Message);
+            return 2;
+        }
+        catch (Exception ex) when (ex is InvalidOperationException or FormatException or IOException)
+        {
+            error.WriteLine($"run failed: {ex.Message}");
+            return 2;
+        }
+
+        Summarise(result, output);
+        if (reportPath is not null)
+        {
+            File.WriteAllText(reportPath, result.ToJson());
+            output.WriteLine($"report: {reportPath}");
+        }
+
+        return result.DeadlineMisses == 0 && result.Faults.Count == 0 ? 0 : 1;
+    }
+
+    private static RunReport RunWithLines(RunOptions options, PluginCatalog catalog, TextWriter output)
+    {
+        var c = CultureInfo.InvariantCulture;
+        var lastSecond = -1;
+        return HeadlessRun.Run(options with { ProgressInterval = TimeSpan.FromMilliseconds(100) }, catalog, p =>
+        {
+            var second = (int)p.Elapsed.TotalSeconds;
+            if (second != lastSecond && (second % 2 == 0 || p.Elapsed >= p.Duration))
+            {
+                lastSecond = second;
+                output.WriteLine(string.Create(c, $"  t={p.Elapsed.TotalSeconds,6:F1} s  ticks {p.Ticks,7}  misses {p.DeadlineMisses}  tracking rms {p.TrackingRmsMm:F3} mm (now {p.TrackingNowMm:F3})  faults {p.Faults}  robot {p.RobotFaults}"));
+            }
+        });
+    }
+
+    private static RunReport RunWithProgressBar(RunOptions options, PluginCatalog catalog)
+    {
+        RunReport? result = null;
+        AnsiConsole.Progress()
+            .Columns(new TaskDescriptionColumn(), new ProgressBarColumn(), new PercentageColumn(), new ElapsedTimeColumn())
+            .Start(ctx =>
+            {
+                var task = ctx.AddTask("running", maxValue: options.Duration.TotalSeconds);
+                result = HeadlessRun.Run(options, catalog, p =>
+                {
+                    task.Value = p.Elapsed.TotalSeconds;
+                    task.Description = string.Create(CultureInfo.InvariantCulture, $"t={p.Elapsed.TotalSeconds:F1}s rms {p.TrackingRmsMm:F2} mm now {p.TrackingNowMm:F2} mm misses {p.DeadlineMisses} faults {p.Faults}");
+                });
+                task.Value = task.MaxValue;
+            });
+        return result!;
+    }
+
+    private static void Summarise(RunReport r, TextWriter output)
+    {
+        var c = CultureInfo.InvariantCulture;
+        output.WriteLine(string.Create(c, $"summary: {r.Ticks} ticks in {r.DurationSeconds:F3} s of loop time, {r.DeadlineMisses} deadline misses"));
+        output.WriteLine(string.Create(c, $"  tick time (us): median {r.TickMedianUs:F1}, p99 {r.TickP99Us:F1}, max {r.TickMaxUs:F1}"));
+        output.WriteLine(string.Create(c, $"  tracking error (mm): rms {r.TrackingRmsMm:F3}, max {r.TrackingMaxMm:F3}"));
+        output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries"));
+        output.WriteLine(string.Create(c, $"  faults: {r.Faults.Count}"));
+        foreach (var f in r.Faults.Take(20))
+        {
+            output.WriteLine(string.Create(c, $"    {f.TimeSeconds,8:F3} s  {f.Source}: {f.Message}"));
+        }
+
+        if (r.Faults.Count > 20)
+        {
+            output.WriteLine($"    ... {r.Faults.Count - 20} more in the report");
+        }
+    }
+}

@@ -1,0 +1,38 @@
+namespace RobotControl.Plugins.Sdk.Settings;
+
+/// <summary>Settings that failed validation; <see cref="Errors"/> lists every problem.</summary>
+public sealed class SettingsException : Exception
+{
+    /// <summary>Creates the exception from the problems found.</summary>
+    public SettingsException(string instanceName, IReadOnlyList<SettingError> errors)
+        : base(Format(instanceName, errors))
+    {
+        Errors = errors;
+    }
+
+    /// <summary>Creates an exception with a message only.</summary>
+    public SettingsException(string message)
+        : base(message)
+    {
+        Errors = [new SettingError("", message)];
+    }
+
+    /// <summary>Creates an exception with a message and cause.</summary>
+    public SettingsException(string message, Exception innerException)
+        : base(message, innerException)
+    {
+        Errors = [new SettingError("", message)];
+    }
+
+    /// <summary>Creates an empty exception.</summary>
+    public SettingsException()
+        : this("invalid settings")
+    {
+    }
+
+    /// <summary>Every problem found.</summary>
+    public IReadOnlyList<SettingError> Errors { get; }
+
+    private static string Format(string instanceName, IReadOnlyList<SettingError> errors) =>
+        $"'{instanceName}': invalid settings: " + string.Join("; ", errors.Select(e => e.Setting.Length == 0 ? e.Message : $"{e.Setting}: {e.Message}"));
+}

@@ -1,0 +1,69 @@
+using RobotControl.Bus.Client;
+using RobotControl.Robot.Modules;
+
+namespace RobotControl.Robot.Bus;
+
+/// <summary>What discovery found, compared with the robot file.</summary>
+/// <param name="Present">Configured modules that answered, with what they said.</param>
+/// <param name="Missing">Configured modules that did not answer.</param>
+/// <param name="Unknown">Modules that answered but the robot file does not list.</param>
+/// <param name="Mismatched">Configured modules that answered but are not what the file says (model, motor count).</param>
+public sealed record DiscoveryReport(
+    IReadOnlyList<RobotController> Present,
+    IReadOnlyList<RobotController> Missing,
+    IReadOnlyList<PingInfo> Unknown,
+    IReadOnlyList<string> Mismatched)
+{
+    /// <summary>True when every configured module answered as configured and nothing else did.</summary>
+    public bool AllAsConfigured => Missing.Count == 0 && Unknown.Count == 0 && Mismatched.Count == 0;
+
+    /// <summary>One line per finding.</summary>
+    public IEnumerable<string> Lines()
+    {
+        foreach (var c in Present)
+        {
+            yield return $"found    id {c.Id,3}  {c.Name} (model {c.ModelNumber}, firmware {c.FirmwareVersion}, {c.Motors.Count} motors: {string.Join(", ", c.Motors.Select(m => m.Config.Name))})";
+        }
+
+        foreach (var c in Missing)
+        {
+            yield return $"MISSING  id {c.Id,3}  {c.Name}: configured in the robot file but does not answer";
+        }
+
+        foreach (var u in Unknown)
+        {
+            yield return $"UNKNOWN  id {u.Id,3}  model {u.ModelNumber}, firmware {u.FirmwareVersion}: answers but the robot file does not list it";
+        }
+
+        foreach (var m in Mismatched)
+        {
+            yield return $"MISMATCH {m}";
+        }
+    }
+}
+
+/// <summary>One persistent parameter that differs between a module and the robot file.</summary>
+/// <param name="ModuleId">The module.</param>
+/// <param name="Expected">The value the robot file implies.</param>
+/// <param name="Actual">The value the module holds.</param>
+public sealed record ParameterMismatch(byte ModuleId, ParameterValue Expected, long Actual)
+{
+    /// <inheritdoc />
+    public override string ToString() => $"module {ModuleId}: {Expected.Field.Name}{(Expected.Field.Count > 1 ? $"[{Expected.Motor}]" : string.Empty)} is {Actual}, robot file says {Expected.Value} ({Expected.Meaning})";
+}
+
+/// <summary>The outcome of homing one motor from its pot.</summary>
+/// <param name="Motor">The motor.</param>
+/// <param name="PotRaw">The pot reading.</param>
+/// <param name="PotPositionRad">The output angle the pot calibration gives.</param>
+/// <param name="PositionRad">The output angle the module now reports.</param>
+/// <param name="HomedNow">True when the module (re)took its position from the pot.</param>
+public sealed record HomingResult(RobotMotor Motor, int PotRaw, double PotPositionRad, double PositionRad, bool HomedNow)
+{
+    /// <summary>Position minus pot, radians.</summary>
+    public double ErrorRad => PositionRad - PotPositionRad;
+
+    /// <inheritdoc />
+    public override string ToString() =>
+        $"{Motor.Config.FullName,-28} pot {PotRaw,4} -> {PotPositionRad * 180 / Math.PI,8:F2} deg, position {PositionRad * 180 / Math.PI,8:F2} deg ({(HomedNow ? "homed from pot" : "kept")}, diff {ErrorRad * 180 / Math.PI:F2} deg)";
+}

@@ -1,0 +1,57 @@
+using RobotControl.Hardware.Model;
+
+namespace RobotControl.Robot.Bus;
+
+/// <summary>One motor-control module of the robot: its ID, friendly name and motors (named after their joints).</summary>
+public sealed class RobotController
+{
+    internal RobotController(ModuleDefinition definition, int index)
+    {
+        Definition = definition;
+        Index = index;
+    }
+
+    /// <summary>The module's entry in the robot file.</summary>
+    public ModuleDefinition Definition { get; }
+
+    /// <summary>Bus ID.</summary>
+    public byte Id => Definition.Id;
+
+    /// <summary>Friendly name (its location), e.g. <c>right shoulder</c>.</summary>
+    public string Name => Definition.Name;
+
+    /// <summary>The module's motors in channel order.</summary>
+    public IReadOnlyList<RobotMotor> Motors => MotorArray;
+
+    /// <summary>The motors as an array (enumerated per cycle without allocating).</summary>
+    internal RobotMotor[] MotorArray { get; set; } = [];
+
+    /// <summary>True when the module answered discovery (and has not gone missing since).</summary>
+    public bool Present => Volatile.Read(ref PresentFlag);
+
+    /// <summary>Model number it reported.</summary>
+    public ushort ModelNumber { get; internal set; }
+
+    /// <summary>Firmware version it reported.</summary>
+    public byte FirmwareVersion { get; internal set; }
+
+    /// <summary>Latched hardware error bits last read (see the control table's hardware_error_status).</summary>
+    public byte HardwareErrorStatus { get; internal set; }
+
+    /// <summary>Times this module was seen to reset since the robot was opened.</summary>
+    public int Resets { get; internal set; }
+
+    /// <summary>Number of channels the bus exchange covers (highest channel + 1).</summary>
+    internal int ChannelSpan => Definition.Motors.Count == 0 ? 1 : Definition.Motors.Max(m => m.Channel) + 1;
+
+    internal int Index { get; }
+
+    internal int ConsecutiveMisses { get; set; }
+
+#pragma warning disable SA1401, CA1051 // written by the bus thread with Volatile
+    internal bool PresentFlag;
+#pragma warning restore SA1401, CA1051
+
+    /// <inheritdoc />
+    public override string ToString() => $"{Name} (id {Id})";
+}

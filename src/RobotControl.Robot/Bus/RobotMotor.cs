@@ -1,0 +1,118 @@
+using RobotControl.Robot.Modules;
+
+namespace RobotControl.Robot.Bus;
+
+/// <summary>
+/// One motor: named after its joint, with its gear ratio, limits and gain (kept in the module's FRAM), manual jog and
+/// setpoint, and two outputs: position (radians at the axis output) and filtered current (A). Manual commands
+/// override the arm's joint setpoints for this motor until <see cref="ReleaseManual"/>. Thread-safe.
+/// </summary>
+public sealed class RobotMotor
+{
+    private double _position;
+    private double _current;
+    private double _manualSetpoint = double.NaN;
+    private double _jogRate;
+    private int _manual;
+
+    internal RobotMotor(MotorConfig config, RobotController controller, int index)
+    {
+        Config = config;
+        Controller = controller;
+        Index = index;
+    }
+
+    /// <summary>The motor's configuration (names, ratio, limits, conversions).</summary>
+    public MotorConfig Config { get; }
+
+    /// <summary>The module driving it.</summary>
+    public RobotController Controller { get; }
+
+    /// <summary>Joint name (or the tool drive's name).</summary>
+    public string Name => Config.Name;
+
+    /// <summary>Total reduction motor to axis output.</summary>
+    public double GearRatio => Config.GearRatio;
+
+    /// <summary>Current limit, A.</summary>
+    public double CurrentLimitA => Config.Motor.CurrentLimitA;
+
+    /// <summary>Speed limit at the axis output, rad/s.</summary>
+    public double SpeedLimitRadS => Config.Motor.SpeedLimitRadS;
+
+    /// <summary>Proportional gain, PWM duty per radian of output error.</summary>
+    public double Kp => Config.Motor.Kp;
+
+    /// <summary>Output: latest axis output angle, radians.</summary>
+    public double PositionRad => Volatile.Read(ref _position);
+
+    /// <summary>Output: latest filtered motor current, A.</summary>
+    public double CurrentA => Volatile.Read(ref _current);
+
+    /// <summary>True while a manual setpoint or jog drives this motor.</summary>
+    public bool IsManual => Volatile.Read(ref _manual) != 0;
+
+    internal int Index { get; }
+
+    /// <summary>Moves the motor to <paramref name="outputRad"/> (limited to its range), overriding the arm's setpoints.</summary>
+    /// <exception cref="ArgumentException">The value is not finite.</exception>
+    public void SetSetpoint(double outputRad)
+    {
+        if (!double.IsFinite(outputRad))
+        {
+            throw new ArgumentException("a motor setpoint must be finite", nameof(outputRad));
+        }
+
+        Volatile.Write(ref _jogRate, 0);
+        Volatile.Write(ref _manualSetpoint, Math.Clamp(outputRad, Config.OutputMinRad, Config.OutputMaxRad));
+        Volatile.Write(ref _manual, 1);
+    }
+
+    /// <summary>Jogs the motor at <paramref name="outputRadPerS"/> (limited to its speed limit) from where it is; 0 stops.</summary>
+    /// <exception cref="ArgumentException">The value is not finite.</exception>
+    public void Jog(double outputRadPerS)
+    {
+        if (!double.IsFinite(outputRadPerS))
+        {
+            throw new ArgumentException("a jog speed must be finite", nameof(outputRadPerS));
+        }
+
+        if (!IsManual)
+        {
+            Volatile.Write(ref _manualSetpoint, PositionRad);
+        }
+
+        Volatile.Write(ref _jogRate, Math.Clamp(outputRadPerS, -SpeedLimitRadS, SpeedLimitRadS));
+        Volatile.Write(ref _manual, 1);
+    }
+
+    /// <summary>Returns the motor to the arm's joint setpoints.</summary>
+    public void ReleaseManual()
+    {
+        Volatile.Write(ref _jogRate, 0);
+        Volatile.Write(ref _manual, 0);
+    }
+
+    /// <inheritdoc />
+    public override string ToString() => Config.ToString();
+
+    /// <summary>The manual goal for this cycle (advancing a jog by <paramref name="dt"/> seconds).</summary>
+    internal double ManualGoal(double dt)
+    {
+        var goal = Volatile.Read(ref _manualSetpoint);
+        var rate = Volatile.Read(ref _jogRate);
+        if (rate != 0)
+        {
+            goal = Math.Clamp(goal + (rate * dt), Config.OutputMinRad, Config.OutputMaxRad);
+            Volatile.Write(ref _manualSetpoint, goal);
+        }
+
+        return goal;
+    }
+
+    internal void Publish(double positionRad, double currentA)
+    {
+        Volatile.Write(ref _position, positionRad);
+        Volatile.Write(ref _current, currentA);
+    }
+}

@@ -1,0 +1,430 @@
+using System.Globalization;
+using System.Text;
+using System.Text.Json;
+using RobotControl.Hardware.Loading;
+using RobotControl.Hardware.Model;
+using RobotControl.Plugins.Sdk;
+using RobotControl.Plugins.Sdk.Settings;
+using RobotControl.Runtime.Discovery;
+using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.Robot;
+
+namespace RobotControl.Runtime.GraphFiles;
+
+/// <summary>
+/// Reads, checks and writes graph files (<c>robotcontrol/graph/1</c>):
+/// <code>
+/// { "schema": "robotcontrol/graph/1", "robot": "../hardware/robots/lb-1.0.json", "transport": "virtual",
+///   "loop_rate_hz": 1000,
+///   "instances": [ { "name": "clutch_right", "type": "clutch", "settings": { ... } } ],
+///   "wires": [ { "from": "scaling_right.x", "to": "clutch_right.x" },
+///              { "from": "walls_right.fx", "to": "touch_right.force_x", "delayed": true } ] }
+/// </code>
+/// Loading validates everything (unknown type, unknown or mistyped signal, duplicate name, bad setting, cycle) and
+/// reports every problem with its JSON path in one <see cref="GraphException"/>; nothing is half-applied.
+/// </summary>
+public static class GraphFile
+{
+    private static readonly JsonDocumentOptions DocumentOptions = new() { CommentHandling = JsonCommentHandling.Skip };
+    private static readonly string[] TopLevel = ["schema", "robot", "transport", "loop_rate_hz", "instances", "wires"];
+
+    /// <summary>Loads, builds and compiles the graph in <paramref name="path"/>.</summary>
+    /// <exception cref="GraphException">Every problem found, with JSON paths.</exception>
+    public static LoadedGraph Load(string path, PluginCatalog catalog, TimeProvider time)
+    {
+        ArgumentException.ThrowIfNullOrEmpty(path);
+        var fullPath = Path.GetFullPath(path);
+        string text;
+        try
+        {
+            text = File.ReadAllText(fullPath);
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        {
+            throw new GraphException([new GraphProblem("$", $"cannot read the file: {ex.Message}")], fullPath);
+        }
+
+        return LoadFromText(text, fullPath, catalog, time);
+    }
+
+    /// <summary>Loads a graph from JSON text; relative paths resolve against <paramref name="virtualPath"/>'s folder.</summary>
+    /// <exception cref="GraphException">Every problem found, with JSON paths.</exception>
+    public static LoadedGraph LoadFromText(string json, string virtualPath, PluginCatalog catalog, TimeProvider time)
+    {
+        ArgumentNullException.ThrowIfNull(json);
+        ArgumentNullException.ThrowIfNull(catalog);
+        ArgumentNullException.ThrowIfNull(time);
+        var fullPath = Path.GetFullPath(virtualPath);
+        var baseDirectory = Path.GetDirectoryName(fullPath)!;
+        JsonDocument document;
+        try
+        {
+            document = JsonDocument.Parse(json, DocumentOptions);
+        }
+        catch (JsonException ex)
+        {
+            throw new GraphException([new GraphProblem("$", $"not valid JSON: {ex.Message}")], fullPath);
+        }
+
+        using (document)
+        {
+            var problems = new List<GraphProblem>();
+            var loaded = Read(document.RootElement, fullPath, baseDirectory, catalog, time, problems);
+            if (problems.Count > 0 || loaded is null)
+            {
+                throw new GraphException(problems, fullPath);
+            }
+
+            return loaded;
+        }
+    }
+
+    /// <summary>Writes <paramref name="document"/> as a graph file (settings in full, wires in order).</summary>
+    public static void Save(GraphDocument document, string path)
+    {
+        ArgumentException.ThrowIfNullOrEmpty(path);
+        File.WriteAllText(path, ToJson(document), new UTF8Encoding(false));
+    }
+
+    /// <summary>The graph file text of <paramref name="document"/>.</summary>
+    public static string ToJson(GraphDocument document)
+    {
+        ArgumentNullException.ThrowIfNull(document);
+        using var stream = new MemoryStream();
+        using (var writer = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        {
+            writer.WriteStartObject();
+            writer.WriteString("schema", GraphDocument.Schema);
+            if (document.Robot is not null)
+            {
+                writer.WriteString("robot", document.Robot);
+            }
+
+            writer.WriteString("transport", document.Transport);
+            writer.WriteNumber("loop_rate_hz", document.LoopRateHz);
+            writer.WriteStartArray("instances");
+            foreach (var instance in document.Instances)
+            {
+                writer.WriteStartObject();
+                writer.WriteString("name", instance.Name);
+                writer.WriteString("type", instance.Type);
+                if (instance.Settings is not null)
+                {
+                    writer.WritePropertyName("settings");
+                    SettingsSchema.For(instance.Settings.GetType()).Write(writer, instance.Settings);
+                }
+
+                writer.WriteEndObject();
+            }
+
+            writer.WriteEndArray();
+            writer.WriteStartArray("wires");
+            foreach (var wire in document.Wires)
+            {
+                writer.WriteStartObject();
+                writer.WriteString("from", wire.From);
+                writer.WriteString("to", wire.To);
+                if (wire.Delayed)
+                {
+                    writer.WriteBoolean("delayed", true);
+                }
+
+                writer.WriteEndObject();
+            }
+
+            writer.WriteEndArray();
+            writer.WriteEndObject();
+        }
+
+        return Encoding.UTF8.GetString(stream.ToArray()) + Environment.NewLine;
+    }
+
+    private static LoadedGraph? Read(JsonElement root, string fullPath, string baseDirectory, PluginCatalog catalog, TimeProvider time, List<GraphProblem> problems)
+    {
+        if (root.ValueKind != JsonValueKind.Object)
+        {
+            problems.Add(new GraphProblem("$", "expected a JSON object"));
+            return null;
+        }
+
+        foreach (var member in root.EnumerateObject().Where(m => !TopLevel.Contains(m.Name)))
+        {
+            problems.Add(new GraphProblem($"$.{member.Name}", $"unknown field (known: {string.Join(", ", TopLevel)})"));
+        }
+
+        var schema = OptionalString(root, "schema", "$.schema", problems);
+        if (schema != GraphDocument.Schema)
+        {
+            problems.Add(new GraphProblem("$.schema", $"expected \"{GraphDocument.Schema}\""));
+        }
+
+        var robotPath = OptionalString(root, "robot", "$.robot", problems);
+        RobotDefinition? robot = null;
+        if (robotPath is not null)
+        {
+            try
+            {
+                robot = RobotLoader.Load(Path.Combine(baseDirectory, robotPath));
+            }
+            catch (RobotDataException ex)
+            {
+                problems.Add(new GraphProblem("$.robot", $"robot file '{robotPath}' is invalid: {ex.Message}"));
+            }
+        }
+
+        var transport = OptionalString(root, "transport", "$.transport", problems) ?? "virtual";
+        var rate = GraphDocument.DefaultLoopRateHz;
+        if (root.TryGetProperty("loop_rate_hz", out var rateJson))
+        {
+            if (rateJson.ValueKind != JsonValueKind.Number || !double.IsFinite(rate = rateJson.GetDouble()) || rate < 1 || rate > 20_000)
+            {
+                problems.Add(new GraphProblem("$.loop_rate_hz", "expected a number within 1..20000 (Hz)"));
+                rate = GraphDocument.DefaultLoopRateHz;
+            }
+        }
+
+        var graph = new PluginGraph();
+        RobotNode? robotNode = null;
+        if (robot is not null)
+        {
+            robotNode = new RobotNode(robot, time, baseDirectory);
+            graph.Add(robotNode);
+        }
+
+        var instances = ReadInstances(root, baseDirectory, robot, catalog, time, graph, problems);
+
+        // Instances named in the file that could not be created: their problems are reported already, and their wires
+        // cannot be checked without them.
+        var failed = new HashSet<string>(StringComparer.Ordinal);
+        if (root.TryGetProperty("instances", out var declared) && declared.ValueKind == JsonValueKind.Array)
+        {
+            foreach (var item in declared.EnumerateArray())
+            {
+                if (item.ValueKind == JsonValueKind.Object && item.TryGetProperty("name", out var n) && n.ValueKind == JsonValueKind.String && graph.Find(n.GetString()!) is null)
+                {
+                    failed.Add(n.GetString()!);
+                }
+            }
+        }
+
+        var wires = ReadWires(root, graph, problems, failed);
+        if (problems.Count > 0)
+        {
+            return null;
+        }
+
+        GraphProgram program;
+        try
+        {
+            program = graph.Compile();
+        }
+        catch (GraphException ex)
+        {
+            problems.AddRange(ex.Problems);
+            return null;
+        }
+
+        robotNode?.SetDriven(wires.Select(w => w.To));
+        var document = new GraphDocument(robotPath, transport, rate, instances, wires);
+        return new LoadedGraph(fullPath, document, robot, robotNode, graph, program);
+    }
+
+    private static List<InstanceSpec> ReadInstances(JsonElement root, string baseDirectory, RobotDefinition? robot, PluginCatalog catalog, TimeProvider time, PluginGraph graph, List<GraphProblem> problems)
+    {
+        var specs = new List<InstanceSpec>();
+        if (!root.TryGetProperty("instances", out var array) || array.ValueKind != JsonValueKind.Array)
+        {
+            problems.Add(new GraphProblem("$.instances", "expected an array of instances"));
+            return specs;
+        }
+
+        var i = -1;
+        foreach (var item in array.EnumerateArray())
+        {
+            i++;
+            var at = string.Create(CultureInfo.InvariantCulture, $"$.instances[{i}]");
+            if (item.ValueKind != JsonValueKind.Object)
+            {
+                problems.Add(new GraphProblem(at, "expected an object with name, type and settings"));
+                continue;
+            }
+
+            foreach (var member in item.EnumerateObject().Where(m => m.Name is not ("name" or "type" or "settings")))
+            {
+                problems.Add(new GraphProblem($"{at}.{member.Name}", "unknown field (known: name, type, settings)"));
+            }
+
+            var name = RequiredString(item, "name", $"{at}.name", problems);
+            var typeName = RequiredString(item, "type", $"{at}.type", problems);
+            if (name is not null)
+            {
+                var nameProblem = name == RobotNode.InstanceName && robot is not null
+                    ? $"'{RobotNode.InstanceName}' is the robot's instance name"
+                    : graph.CheckName(name);
+                if (nameProblem is not null)
+                {
+                    problems.Add(new GraphProblem($"{at}.name", nameProblem));
+                    name = null;
+                }
+            }
+
+            if (typeName is null)
+            {
+                continue;
+            }
+
+            var type = catalog.Find(typeName);
+            if (type is null)
+            {
+                problems.Add(new GraphProblem($"{at}.type", $"unknown plug-in type '{typeName}' (known: {string.Join(", ", catalog.Types.Select(t => t.Name).Order(StringComparer.Ordinal))})"));
+                continue;
+            }
+
+            PluginSettings? settings = null;
+            var settingsJson = item.TryGetProperty("settings", out var s) ? s : default;
+            if (type.Settings is not null)
+            {
+                var errors = new List<SettingError>();
+                settings = type.Settings.Read(settingsJson, errors);
+                problems.AddRange(errors.Select(e => new GraphProblem(e.Setting.Length == 0 ? $"{at}.settings" : $"{at}.settings.{e.Setting}", e.Message)));
+                if (settings is null)
+                {
+                    continue;
+                }
+            }
+            else if (settingsJson.ValueKind == JsonValueKind.Object && settingsJson.EnumerateObject().Any())
+            {
+                problems.Add(new GraphProblem($"{at}.settings", $"plug-in type '{typeName}' has no settings"));
+                continue;
+            }
+
+            if (name is null)
+            {
+                continue;
+            }
+
+            try
+            {
+                var plugin = type.Create(settings, new PluginContext(name, robot, time, baseDirectory));
+                graph.Add(plugin);
+                specs.Add(new InstanceSpec(name, typeName, settings));
+            }
+            catch (SettingsException ex)
+            {
+                problems.AddRange(ex.Errors.Select(e => new GraphProblem(e.Setting.Length == 0 ? $"{at}.settings" : $"{at}.settings.{e.Setting}", e.Message)));
+            }
+#pragma warning disable CA1031 // a plug-in constructor may fail in any way (missing file, bad robot); report it at the instance
+            catch (Exception ex)
+#pragma warning restore CA1031
+            {
+                problems.Add(new GraphProblem(at, $"'{name}' ({typeName}) could not be created: {ex.Message}"));
+            }
+        }
+
+        return specs;
+    }
+
+    private static List<Wire> ReadWires(JsonElement root, PluginGraph graph, List<GraphProblem> problems, HashSet<string> failed)
+    {
+        var wires = new List<Wire>();
+        if (!root.TryGetProperty("wires", out var array))
+        {
+            return wires;
+        }
+
+        if (array.ValueKind != JsonValueKind.Array)
+        {
+            problems.Add(new GraphProblem("$.wires", "expected an array of wires"));
+            return wires;
+        }
+
+        var i = -1;
+        foreach (var item in array.EnumerateArray())
+        {
+            i++;
+            var at = string.Create(CultureInfo.InvariantCulture, $"$.wires[{i}]");
+            if (item.ValueKind != JsonValueKind.Object)
+            {
+                problems.Add(new GraphProblem(at, "expected an object with from, to and optionally delayed"));
+                continue;
+            }
+
+            foreach (var member in item.EnumerateObject().Where(m => m.Name is not ("from" or "to" or "delayed")))
+            {
+                problems.Add(new GraphProblem($"{at}.{member.Name}", "unknown field (known: from, to, delayed)"));
+            }
+
+            var from = RequiredString(item, "from", $"{at}.from", problems);
+            var to = RequiredString(item, "to", $"{at}.to", problems);
+            var delayed = false;
+            if (item.TryGetProperty("delayed", out var d))
+            {
+                if (d.ValueKind is JsonValueKind.True or JsonValueKind.False)
+                {
+                    delayed = d.GetBoolean();
+                }
+                else
+                {
+                    problems.Add(new GraphProblem($"{at}.delayed", "expected true or false"));
+                }
+            }
+
+            if (from is null || to is null)
+            {
+                continue;
+            }
+
+            if ((SignalName.TrySplit(from, out var fromInstance, out _) && failed.Contains(fromInstance))
+                || (SignalName.TrySplit(to, out var toInstance, out _) && failed.Contains(toInstance)))
+            {
+                continue; // the instance's own problems are reported; its wires cannot be checked without it
+            }
+
+            var wire = new Wire(from, to, delayed, at);
+            var problem = graph.TryConnect(wire);
+            if (problem is null)
+            {
+                wires.Add(wire);
+                continue;
+            }
+
+            // Point at the end that is wrong when we can tell.
+            var field = problem.Contains($"'{to}'", StringComparison.Ordinal) && !problem.Contains($"'{from}'", StringComparison.Ordinal) ? "to" : "from";
+            if (problem.StartsWith("input ", StringComparison.Ordinal))
+            {
+                field = "to";
+            }
+
+            problems.Add(new GraphProblem($"{at}.{field}", problem));
+        }
+
+        return wires;
+    }
+
+    private static string? OptionalString(JsonElement obj, string name, string path, List<GraphProblem> problems)
+    {
+        if (!obj.TryGetProperty(name, out var value) || value.ValueKind == JsonValueKind.Null)
+        {
+            return null;
+        }
+
+        if (value.ValueKind != JsonValueKind.String)
+        {
+            problems.Add(new GraphProblem(path, $"expected a string, found {value.ValueKind.ToString().ToLowerInvariant()}"));
+            return null;
+        }
+
+        return value.GetString();
+    }
+
+    private static string? RequiredString(JsonElement obj, string name, string path, List<GraphProblem> problems)
+    {
+        var value = OptionalString(obj, name, path, problems);
+        if (value is null && !problems.Any(p => p.Path == path))
+        {
+            problems.Add(new GraphProblem(path, "is required"));
+        }
+
+        return string.IsNullOrWhiteSpace(value) ? null : value;
+    }
+}

@@ -1,0 +1,196 @@
+using System.Diagnostics;
+using RobotControl.Plugins.Sdk;
+using RobotControl.Runtime.Graph;
+
+namespace RobotControl.Runtime.Loop;
+
+/// <summary>
+/// Runs a <see cref="GraphProgram"/> at a fixed rate on the clock of an injectable <see cref="TimeProvider"/>.
+/// Either on its own thread (<see cref="Start"/>: sleeps, then spins to the deadline; a tick that ends after its
+/// deadline counts as a miss and a loop that falls a whole period behind skips ticks rather than bursting), or
+/// stepped by the caller (<see cref="Step"/>: one tick at the clock's current time, for virtual clocks; the caller
+/// advances the clock one period between steps, which runs exactly like the thread, deterministically). Ticks
+/// allocate nothing.
+/// </summary>
+public sealed class ControlLoop : IDisposable
+{
+    private readonly TimeProvider _time;
+    private readonly long _periodTimestamp;
+    private readonly ITickObserver? _observer;
+    private Thread? _thread;
+    private volatile bool _stopRequested;
+    private long _index;
+    private long _startTimestamp;
+    private long _nextDue;
+    private bool _started;
+    private Exception? _threadFailure;
+
+    /// <summary>Creates a loop for <paramref name="program"/> at <paramref name="rateHz"/> on <paramref name="time"/>.</summary>
+    public ControlLoop(GraphProgram program, TimeProvider time, double rateHz = 1000.0, ITickObserver? observer = null)
+    {
+        ArgumentNullException.ThrowIfNull(program);
+        ArgumentNullException.ThrowIfNull(time);
+        if (!double.IsFinite(rateHz) || rateHz < 1 || rateHz > 20_000)
+        {
+            throw new ArgumentOutOfRangeException(nameof(rateHz), rateHz, "the loop rate must lie within 1..20000 Hz");
+        }
+
+        Program = program;
+        _time = time;
+        _observer = observer;
+        RateHz = rateHz;
+        Period = TimeSpan.FromTicks((long)Math.Round(TimeSpan.TicksPerSecond / rateHz));
+        _periodTimestamp = (long)Math.Round(time.TimestampFrequency / rateHz);
+    }
+
+    /// <summary>The graph being run.</summary>
+    public GraphProgram Program { get; }
+
+    /// <summary>Ticks per second.</summary>
+    public double RateHz { get; }
+
+    /// <summary>The nominal period.</summary>
+    public TimeSpan Period { get; }
+
+    /// <summary>Tick times and deadline misses.</summary>
+    public TickStatistics Statistics { get; } = new();
+
+    /// <summary>Ticks run so far.</summary>
+    public long TickCount => Volatile.Read(ref _index);
+
+    /// <summary>
+    /// The loop-clock timestamp at which the next tick is due. A stepped caller advances its clock to this (normally
+    /// one period after the last tick; later after an overrun, whose missed slots are skipped).
+    /// </summary>
+    public long NextDueTimestamp => _nextDue;
+
+    /// <summary>The exception that ended the loop thread (the graph isolates plug-in faults; this is anything else).</summary>
+    public Exception? ThreadFailure => _threadFailure;
+
+    /// <summary>Runs one tick at the clock's current time (virtual-time use). Starts the graph on the first call.</summary>
+    public void Step()
+    {
+        if (_thread is not null)
+        {
+            throw new InvalidOperationException("the loop runs on its own thread; Step is for stepped (virtual-time) use");
+        }
+
+        EnsureStarted();
+        RunTick(_time.GetTimestamp());
+    }
+
+    /// <summary>Starts the loop thread.</summary>
+    public void Start()
+    {
+        if (_thread is not null || _started)
+        {
+            throw new InvalidOperationException("the loop was already started");
+        }
+
+        _thread = new Thread(ThreadMain) { Name = "control loop", IsBackground = true, Priority = ThreadPriority.Highest };
+        _thread.Start();
+    }
+
+    /// <summary>Stops the loop thread (if any) and the graph.</summary>
+    public void Stop()
+    {
+        _stopRequested = true;
+        _thread?.Join();
+        Program.Stop();
+    }
+
+    /// <inheritdoc />
+    public void Dispose() => Stop();
+
+    private void EnsureStarted()
+    {
+        if (_started)
+        {
+            return;
+        }
+
+        _started = true;
+        _startTimestamp = _time.GetTimestamp();
+        _nextDue = _startTimestamp;
+        Program.Start(new TickContext(0, _startTimestamp, TimeSpan.Zero, Period));
+    }
+
+    private void ThreadMain()
+    {
+        try
+        {
+            EnsureStarted();
+            while (!_stopRequested)
+            {
+                WaitUntil(_nextDue);
+                if (_stopRequested)
+                {
+                    break;
+                }
+
+                RunTick(_time.GetTimestamp());
+            }
+        }
+#pragma warning disable CA1031 // surfaced through ThreadFailure; the harness reports it
+        catch (Exception ex)
+#pragma warning restore CA1031
+        {
+            _threadFailure = ex;
+        }
+    }
+
+    private void WaitUntil(long due)
+    {
+        var frequency = _time.TimestampFrequency;
+        while (!_stopRequested)
+        {
+            var remaining = due - _time.GetTimestamp();
+            if (remaining <= 0)
+            {
+                return;
+            }
+
+            // Sleep while more than ~1.5 ms remain (the OS sleeps at least 1 ms), then spin politely to the deadline.
+            if (remaining * 1000 > frequency * 3 / 2)
+            {
+                Thread.Sleep(1);
+            }
+            else
+            {
+                Thread.SpinWait(50);
+            }
+        }
+    }
+
+    private void RunTick(long now)
+    {
+        var index = _index;
+        var elapsed = _time.GetElapsedTime(_startTimestamp, now);
+        var context = new TickContext(index, now, elapsed, Period);
+        var begin = Stopwatch.GetTimestamp();
+        Program.Tick(context);
+        var end = Stopwatch.GetTimestamp();
+        Statistics.Record(end - begin);
+
+        // Deadline: the tick due at _nextDue must finish (on the loop clock) before the next one is due.
+        var deadline = _nextDue + _periodTimestamp;
+        var finished = _time.GetTimestamp();
+        long misses = finished > deadline ? 1 : 0;
+        _nextDue = deadline;
+        if (finished > _nextDue + _periodTimestamp)
+        {
+            // A whole period (or more) behind: skip the ticks that cannot be run in time instead of bursting.
+            var behind = (finished - _nextDue) / _periodTimestamp;
+            _nextDue += behind * _periodTimestamp;
+            misses += behind;
+        }
+
+        if (misses > 0)
+        {
+            Statistics.AddDeadlineMisses(misses);
+        }
+
+        Volatile.Write(ref _index, index + 1);
+        _observer?.AfterTick(context);
+    }
+}

@@ -1,0 +1,191 @@
+using RobotControl.Hardware.Model;
+using RobotControl.Plugins.Sdk;
+using RobotControl.Plugins.Sdk.Ports;
+using RobotControl.Robot.Control;
+
+namespace RobotControl.Runtime.Robot;
+
+/// <summary>
+/// The robot as a graph instance (named <see cref="InstanceName"/>): inputs are joint setpoints per arm
+/// (<c>right.elbow</c>, radians, in the arm's own right-arm model) and the jaw (<c>right.jaw</c>); outputs are the
+/// joint positions the modules report (<c>right.elbow.position</c>), motor currents (<c>right.elbow.current</c>, A)
+/// and the robot's fault flags (<c>faults</c>). Talks to an <see cref="IRobotPort"/> without blocking or allocating.
+/// <para>
+/// Safety: when anything upstream has faulted the robot holds position (once, then stays held); a non-finite
+/// setpoint is never written (the arm holds and <see cref="RejectedSetpoints"/> counts it). Arms without a wired
+/// setpoint are not commanded; unwired joints of a commanded arm keep the position read at start.
+/// </para>
+/// </summary>
+public sealed class RobotNode : Plugin
+{
+    /// <summary>The instance name the robot has in every graph.</summary>
+    public const string InstanceName = "robot";
+
+    private readonly RobotDefinition _robot;
+    private readonly InputPort[][] _setpoints;
+    private readonly InputPort[] _jaws;
+    private readonly OutputPort[][] _positions;
+    private readonly OutputPort[][] _currents;
+    private readonly OutputPort _faults;
+    private readonly double[] _joints;
+    private readonly double[] _currentValues;
+    private readonly double[][] _commanded;
+    private readonly bool[] _commandedThisTick;
+    private bool[] _armDriven;
+    private bool[] _jawDriven;
+    private IRobotPort? _port;
+    private long _rejected;
+
+    /// <summary>Creates the robot's node from its definition; attach a port with <see cref="Attach"/> before starting.</summary>
+    public RobotNode(RobotDefinition robot, TimeProvider time, string baseDirectory)
+        : base(new PluginContext(InstanceName, robot, time, baseDirectory))
+    {
+        ArgumentNullException.ThrowIfNull(robot);
+        _robot = robot;
+        var arms = robot.Arms.Count;
+        var jointCount = robot.JointCount;
+        _setpoints = new InputPort[arms][];
+        _jaws = new InputPort[arms];
+        _positions = new OutputPort[arms][];
+        _currents = new OutputPort[arms][];
+        _commanded = new double[arms][];
+        for (var a = 0; a < arms; a++)
+        {
+            var arm = robot.Arms[a].Name;
+            _setpoints[a] = [.. robot.Joints.Select(j => DeclareInput($"{arm}.{j.Name}", "rad", $"{arm} arm {j.Name} setpoint"))];
+            _jaws[a] = DeclareInput($"{arm}.jaw", "rad", $"{arm} arm jaw opening setpoint");
+            _commanded[a] = new double[jointCount];
+        }
+
+        for (var a = 0; a < arms; a++)
+        {
+            var arm = robot.Arms[a].Name;
+            _positions[a] = [.. robot.Joints.Select(j => DeclareOutput($"{arm}.{j.Name}.position", SafeValue.HoldLastFinite, "rad", $"{arm} arm {j.Name} position reported by the modules"))];
+            _currents[a] = [.. robot.Actuators.Select(m => DeclareOutput($"{arm}.{m.Name}.current", SafeValue.Zero, "A", $"{arm} arm {m.Label} filtered motor current"))];
+        }
+
+        _faults = DeclareOutput("faults", SafeValue.HoldLastFinite, "", "robot fault flags (RobotFaults)");
+        _joints = new double[jointCount];
+        _currentValues = new double[robot.Actuators.Count];
+        _commandedThisTick = new bool[arms];
+        _armDriven = new bool[arms];
+        _jawDriven = new bool[arms];
+    }
+
+    /// <summary>The robot.</summary>
+    public RobotDefinition Robot => _robot;
+
+    /// <summary>The attached port.</summary>
+    public IRobotPort? Port => _port;
+
+    /// <summary>True once the robot was told to hold because something upstream faulted.</summary>
+    public bool Holding { get; private set; }
+
+    /// <summary>Setpoint vectors refused because they held a non-finite value.</summary>
+    public long RejectedSetpoints => Volatile.Read(ref _rejected);
+
+    /// <summary>Attaches the robot's port (before the graph starts).</summary>
+    public void Attach(IRobotPort port)
+    {
+        ArgumentNullException.ThrowIfNull(port);
+        if (port.ArmCount != _robot.Arms.Count)
+        {
+            throw new ArgumentException($"the port drives {port.ArmCount} arms; {_robot.Name} has {_robot.Arms.Count}", nameof(port));
+        }
+
+        _port = port;
+    }
+
+    /// <summary>The joint setpoints written for <paramref name="arm"/> on the last tick (valid when <see cref="CommandedThisTick"/>).</summary>
+    public ReadOnlySpan<double> LastCommanded(int arm) => _commanded[arm];
+
+    /// <summary>True when <paramref name="arm"/> was sent setpoints on the last tick.</summary>
+    public bool CommandedThisTick(int arm) => _commandedThisTick[arm];
+
+    /// <inheritdoc />
+    public override void Start(in TickContext context)
+    {
+        var port = _port ?? throw new InvalidOperationException("the robot node has no port attached");
+        for (var a = 0; a < _setpoints.Length; a++)
+        {
+            port.ReadJointPositions(a, _joints);
+            for (var j = 0; j < _joints.Length; j++)
+            {
+                SetInput(_setpoints[a][j].Index, _joints[j]);
+            }
+        }
+    }
+
+    /// <inheritdoc />
+    public override void Tick(in TickContext context)
+    {
+        var port = _port!;
+        for (var a = 0; a < _positions.Length; a++)
+        {
+            port.ReadJointPositions(a, _joints);
+            for (var j = 0; j < _joints.Length; j++)
+            {
+                Write(_positions[a][j], _joints[j]);
+            }
+
+            port.ReadMotorCurrents(a, _currentValues);
+            for (var m = 0; m < _currentValues.Length; m++)
+            {
+                Write(_currents[a][m], _currentValues[m]);
+            }
+        }
+
+        Write(_faults, (int)port.Faults);
+        if (UpstreamFaulted)
+        {
+            if (!Holding)
+            {
+                Holding = true;
+                port.HoldPosition();
+            }
+
+            Array.Clear(_commandedThisTick);
+            return;
+        }
+
+        for (var a = 0; a < _setpoints.Length; a++)
+        {
+            _commandedThisTick[a] = false;
+            if (!_armDriven[a])
+            {
+                continue;
+            }
+
+            var setpoint = _commanded[a];
+            var finite = true;
+            for (var j = 0; j < setpoint.Length; j++)
+            {
+                var v = Read(_setpoints[a][j]);
+                finite &= double.IsFinite(v);
+                setpoint[j] = v;
+            }
+
+            if (!finite)
+            {
+                Interlocked.Increment(ref _rejected);
+                continue; // the port keeps the last finite setpoint of this arm
+            }
+
+            port.WriteJointSetpoints(a, setpoint);
+            _commandedThisTick[a] = true;
+            var jaw = Read(_jaws[a]);
+            if (_jawDriven[a] && double.IsFinite(jaw))
+            {
+                port.WriteJawSetpoint(a, jaw);
+            }
+        }
+    }
+
+    /// <summary>Marks which arms and jaws have wired setpoints (from the graph's wires).</summary>
+    internal void SetDriven(IEnumerable<string> wiredInputs)
+    {
+        var wired = wiredInputs.ToHashSet(StringComparer.Ordinal);
+        _armDriven = [.. _robot.Arms.Select(arm => _robot.Joints.Any(j => wired.Contains($"{InstanceName}.{arm.Name}.{j.Name}")))];
+        _jawDriven = [.. _robot.Arms.Select(arm => wired.Contains($"{InstanceName}.{arm.Name}.jaw"))];
+    }
+}

@@ -1,0 +1,49 @@
+using RobotControl.Hardware.Model;
+using RobotControl.Robot.Modules;
+using RobotControl.Simulation.Models;
+
+namespace RobotControl.Simulation;
+
+/// <summary>One simulated motor with its drivetrain, Hall sensors, current sense and pot: the truth a test compares against.</summary>
+public sealed class VirtualAxis
+{
+    internal VirtualAxis(MotorConfig config, int moduleIndex, DrivetrainModel model)
+    {
+        Config = config;
+        ModuleIndex = moduleIndex;
+        Model = model;
+    }
+
+    /// <summary>The motor as the robot file configures it.</summary>
+    public MotorConfig Config { get; }
+
+    /// <summary>Axis output angle, radians (the truth).</summary>
+    public double OutputAngleRad => Model.OutputAngle;
+
+    /// <summary>Winding current, A (signed; the truth, without sensor noise).</summary>
+    public double CurrentA => Model.Current;
+
+    /// <summary>PWM the firmware applies (-255..255).</summary>
+    public int Pwm { get; internal set; }
+
+    /// <summary>True while the firmware enables the bridge.</summary>
+    public bool DriverEnabled { get; internal set; }
+
+    /// <summary>
+    /// External torque at the axis output (N·m) that resists motion up to its magnitude: an obstacle or a jammed
+    /// joint. 0: none.
+    /// </summary>
+    public double ObstacleTorqueNm
+    {
+        get => Model.ObstacleTorque;
+        set => Model.ObstacleTorque = Math.Abs(value);
+    }
+
+    internal int ModuleIndex { get; }
+
+    internal DrivetrainModel Model { get; }
+
+    internal int LastSector { get; set; }
+
+    internal MotorDefinition Motor => Model.Motor;
+}

@@ -1,0 +1,491 @@
+using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
+using RobotControl.Bus.Transports;
+using RobotControl.Hardware.Model;
+using RobotControl.Robot.Modules;
+using RobotControl.Simulation.Bus;
+using RobotControl.Simulation.Models;
+using RobotControl.Simulation.Native;
+using RobotControl.Simulation.Time;
+
+namespace RobotControl.Simulation;
+
+/// <summary>
+/// A robot's module bus with nothing real attached: every module runs the real firmware (the host build,
+/// librcfw_host.so), fed by models of its motors (electrical and mechanical, from the datasheets), gearheads (ratio,
+/// efficiency, backlash), Hall sensors, current sense (seeded noise) and non-linear joint pots. Bytes take wire time
+/// at the bus baud. Time is simulated on a <see cref="ManualTimeProvider"/>: it moves when the host waits for bytes
+/// (<see cref="OpenLink"/>), when told (<see cref="Advance"/>), or with the wall clock (<see cref="Serve"/>).
+/// Faults: wire bit errors and lost bytes (<see cref="WireFaults"/>), module resets at a given time
+/// (<see cref="ScheduleReset"/>), power cycles, stalled motors (<see cref="VirtualAxis.ObstacleTorqueNm"/>).
+/// Not thread-safe: one thread drives it (the links it hands out run on the caller's thread).
+/// </summary>
+public sealed unsafe class VirtualRobot : IDisposable
+{
+    private readonly ManualTimeProvider _clock;
+    private readonly long _clockOrigin;
+    private readonly VirtualAxis[] _axes;
+    private readonly ModuleDefinition[] _modules;
+    private readonly NoiseSource _sensorNoise;
+    private readonly NoiseSource _wireNoise;
+    private readonly long _physicsStepUs;
+    private double _byteUs;
+    private readonly List<(long AtUs, int Module, byte Cause)> _resets = [];
+    private readonly byte[] _scratch = new byte[4096];
+    private const long MaxRealTimeLagUs = 20_000;
+    private readonly VirtualRobotOptions _options;
+    private nint _bus;
+    private long _nowUs;
+    private long _physicsUs;
+    private long _hostFreeUs;
+
+    /// <summary>Builds the virtual robot of <paramref name="robot"/> (its <c>modules</c> section) on <paramref name="clock"/>.</summary>
+    /// <exception cref="ArgumentException">The robot file has no modules.</exception>
+    public VirtualRobot(RobotDefinition robot, ManualTimeProvider clock, VirtualRobotOptions? options = null)
+    {
+        ArgumentNullException.ThrowIfNull(robot);
+        ArgumentNullException.ThrowIfNull(clock);
+        _options = options ?? new VirtualRobotOptions();
+        if (robot.Modules.Modules.Count == 0)
+        {
+            throw new ArgumentException($"{robot.SourceFile}: the robot file has no modules section, so there is no bus to simulate", nameof(robot));
+        }
+
+        Definition = robot;
+        _clock = clock;
+        _clockOrigin = clock.GetTimestamp();
+        _modules = robot.Modules.Modules.ToArray();
+        BaudRate = _options.BaudRate ?? robot.Modules.BaudRate;
+        _physicsStepUs = Math.Max(1, (long)_options.PhysicsStep.TotalMicroseconds);
+        _sensorNoise = new NoiseSource(_options.Seed);
+        _wireNoise = new NoiseSource(_options.Seed * 7919);
+
+        var ids = _modules.Select(m => m.Id).ToArray();
+        var motorCounts = _modules.Select(m => (byte)Math.Max(1, m.Motors.Count == 0 ? 1 : m.Motors.Max(x => x.Channel) + 1)).ToArray();
+        fixed (byte* pi = ids, pm = motorCounts)
+        {
+            _bus = FirmwareHost.BusCreate(ids.Length, pi, pm);
+        }
+
+        if (_bus == 0)
+        {
+            throw new InvalidOperationException("rcfw_bus_create refused the module layout");
+        }
+
+        // Modules leave the factory at the control table's default baud; commissioning moves them to BaudRate.
+        FirmwareHost.Check(FirmwareHost.BusSetBaud(_bus, (uint)FactoryBaud), "rcfw_bus_set_baud");
+        _byteUs = 10e6 / FactoryBaud;
+        var axes = new List<VirtualAxis>();
+        for (var mi = 0; mi < _modules.Length; mi++)
+        {
+            foreach (var motor in _modules[mi].Motors)
+            {
+                var config = new MotorConfig(robot, _modules[mi], motor);
+                var actuator = config.Actuator;
+                var model = new DrivetrainModel(actuator, robot.Motor(actuator.Drivetrain.MotorModel), _options.BacklashDeg * Math.PI / 180, LinkInertia(actuator))
+                {
+                    HardStops = (config.OutputMinRad - 0.05, config.OutputMaxRad + 0.05),
+                };
+                model.Reset(InitialOutput(robot, config));
+                axes.Add(new VirtualAxis(config, mi, model));
+            }
+        }
+
+        _axes = axes.ToArray();
+        foreach (var axis in _axes)
+        {
+            axis.LastSector = Sector(axis);
+            _ = FirmwareHost.SetHall(_bus, axis.ModuleIndex, axis.Config.Channel, HallSensors.Code(axis.Model.RotorAngle, axis.Motor.PolePairs));
+        }
+
+        // Power-on state: sensors valid before the firmware's first ticks.
+        FeedSensors();
+        for (var mi = 0; mi < _modules.Length; mi++)
+        {
+            FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, mi), "rcfw_power_cycle");
+        }
+
+        if (_options.Commissioned)
+        {
+            Commission();
+        }
+    }
+
+    /// <summary>The robot file.</summary>
+    public RobotDefinition Definition { get; }
+
+    /// <summary>The simulated clock.</summary>
+    public ManualTimeProvider Clock => _clock;
+
+    /// <summary>Bus speed, bits/s (the modules are commissioned to it).</summary>
+    public int BaudRate { get; }
+
+    /// <summary>Baud of a module fresh from the factory (the control table's default baud code).</summary>
+    public static int FactoryBaud => ModuleParameters.BaudFromCode((int)ControlTable.Firmware["baud_rate"].Default);
+
+    /// <summary>Every simulated motor, modules in file order, motors in file order.</summary>
+    public IReadOnlyList<VirtualAxis> Axes => _axes;
+
+    /// <summary>Faults on the wire (host and modules alike).</summary>
+    public WireFaults WireFaults { get; set; } = WireFaults.None;
+
+    /// <summary>Bytes the wire faults corrupted.</summary>
+    public long CorruptedBytes { get; private set; }
+
+    /// <summary>Bytes the wire faults dropped.</summary>
+    public long DroppedBytes { get; private set; }
+
+    /// <summary>Bytes the host sent and received (for wire utilisation).</summary>
+    public long WireBytes { get; private set; }
+
+    /// <summary>Times two modules drove the line at once.</summary>
+    public int Collisions => FirmwareHost.BusCollisions(_bus);
+
+    /// <summary>Simulated time since the robot was built.</summary>
+    public TimeSpan Elapsed => TimeSpan.FromTicks(_nowUs * 10);
+
+    /// <summary>The axis that drives <paramref name="actuator"/> of arm <paramref name="arm"/>.</summary>
+    /// <exception cref="KeyNotFoundException">No module drives it.</exception>
+    public VirtualAxis Axis(int arm, string actuator) =>
+        _axes.FirstOrDefault(a => a.Config.Arm == arm && a.Config.Actuator.Name == actuator)
+        ?? throw new KeyNotFoundException($"no module drives actuator '{actuator}' of arm {arm}");
+
+    /// <summary>The host's end of the bus. Reads run the simulation forward on its clock.</summary>
+    public IByteLink OpenLink() => new VirtualLink(this);
+
+    /// <summary>Runs the simulation for <paramref name="duration"/> with no host traffic.</summary>
+    public void Advance(TimeSpan duration) => AdvanceTo(_nowUs + (long)Math.Ceiling(duration.TotalMicroseconds));
+
+    /// <summary>Resets module <paramref name="moduleId"/> (cause: brown-out, as cautery EMI does) at <paramref name="at"/> after construction.</summary>
+    public void ScheduleReset(byte moduleId, TimeSpan at, byte cause = FirmwareHost.ResetBrownOut)
+    {
+        _resets.Add(((long)at.TotalMicroseconds, ModuleIndex(moduleId), cause));
+        _resets.Sort((a, b) => a.AtUs.CompareTo(b.AtUs));
+    }
+
+    /// <summary>Switches module <paramref name="moduleId"/> off and on (RAM lost, FRAM kept).</summary>
+    public void PowerCycle(byte moduleId) => FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, ModuleIndex(moduleId)), "rcfw_power_cycle");
+
+    /// <summary>Reads bytes of module <paramref name="moduleId"/>'s control table directly (not over the bus).</summary>
+    public void PeekTable(byte moduleId, ushort address, Span<byte> destination)
+    {
+        fixed (byte* p = destination)
+        {
+            FirmwareHost.Check(FirmwareHost.PeekTable(_bus, ModuleIndex(moduleId), address, p, destination.Length), "rcfw_peek_table");
+        }
+    }
+
+    /// <summary>
+    /// Serves the bus on <paramref name="port"/> (a pty master or any byte link) in real time until cancelled: bytes
+    /// from the port go to the modules, their replies back, and simulated time follows the wall clock.
+    /// </summary>
+    public void Serve(IByteLink port, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(port);
+        var buffer = new byte[4096];
+        var start = System.Diagnostics.Stopwatch.GetTimestamp();
+        var origin = _nowUs;
+        while (!cancellationToken.IsCancellationRequested)
+        {
+            var n = port.Read(buffer, TimeSpan.FromMicroseconds(200));
+            if (n > 0)
+            {
+                HostWrite(buffer.AsSpan(0, n));
+            }
+
+            // Follow the wall clock in steps of at most 1 ms, handing replies out as soon as they are complete. When
+            // the simulation cannot keep up, it slips (simulated time runs slower) rather than answer late.
+            var wall = origin + (long)System.Diagnostics.Stopwatch.GetElapsedTime(start).TotalMicroseconds;
+            if (wall - _nowUs > MaxRealTimeLagUs)
+            {
+                origin -= wall - _nowUs - MaxRealTimeLagUs;
+                SlippedTime += TimeSpan.FromTicks((wall - _nowUs - MaxRealTimeLagUs) * 10);
+                wall = _nowUs + MaxRealTimeLagUs;
+            }
+
+            do
+            {
+                AdvanceTo(Math.Min(wall, _nowUs + 1000));
+                var m = TakeHostBytes(buffer);
+                if (m > 0)
+                {
+                    port.Write(buffer.AsSpan(0, m));
+                }
+            }
+            while (_nowUs < wall && !cancellationToken.IsCancellationRequested);
+        }
+    }
+
+    /// <summary>Wall-clock time the real-time simulation (<see cref="Serve"/>) fell behind and skipped.</summary>
+    public TimeSpan SlippedTime { get; private set; }
+
+    /// <inheritdoc />
+    public void Dispose()
+    {
+        var bus = Interlocked.Exchange(ref _bus, 0);
+        if (bus != 0)
+        {
+            FirmwareHost.BusDestroy(bus);
+        }
+    }
+
+    internal void HostWrite(ReadOnlySpan<byte> data)
+    {
+        CatchUpWithClock();
+        if (_hostFreeUs > _nowUs)
+        {
+            AdvanceTo(_hostFreeUs); // the previous frame is still leaving the host's UART
+        }
+
+        var n = ApplyFaults(data, _scratch);
+        WireBytes += data.Length;
+        fixed (byte* p = _scratch)
+        {
+            FirmwareHost.Check(FirmwareHost.BusWrite(_bus, p, n), "rcfw_bus_write");
+        }
+
+        _hostFreeUs = _nowUs + (long)Math.Ceiling(data.Length * _byteUs);
+    }
+
+    internal int HostRead(Span<byte> destination, TimeSpan timeout)
+    {
+        CatchUpWithClock();
+        var deadline = _nowUs + (long)Math.Ceiling(timeout.TotalMicroseconds);
+        while (true)
+        {
+            // Let a reply that is streaming in finish before handing it over: the host acts on whole frames only.
+            var pending = FirmwareHost.BusPending(_bus);
+            if (pending > 0 && _nowUs < deadline)
+            {
+                AdvanceTo(Math.Min(deadline, _nowUs + Math.Max(1, (long)Math.Ceiling(pending * _byteUs))));
+                continue;
+            }
+
+            var n = TakeHostBytes(destination);
+            if (n > 0 || _nowUs >= deadline)
+            {
+                return n;
+            }
+
+            AdvanceTo(deadline);
+        }
+    }
+
+    internal void HostDiscard() => TakeHostBytes(_scratch);
+
+    private int TakeHostBytes(Span<byte> destination)
+    {
+        int n;
+        fixed (byte* p = _scratch)
+        {
+            n = FirmwareHost.BusRead(_bus, p, Math.Min(destination.Length, _scratch.Length));
+        }
+
+        WireBytes += n;
+        return ApplyFaults(_scratch.AsSpan(0, n), destination);
+    }
+
+    private void CatchUpWithClock()
+    {
+        var clockUs = (_clock.GetTimestamp() - _clockOrigin) / 10;
+        if (clockUs > _nowUs)
+        {
+            AdvanceTo(clockUs);
+        }
+    }
+
+    private void AdvanceTo(long targetUs)
+    {
+        while (_nowUs < targetUs)
+        {
+            var next = Math.Min(targetUs, _physicsUs + _physicsStepUs);
+            if (_resets.Count > 0 && _resets[0].AtUs < next)
+            {
+                next = Math.Max(_nowUs, _resets[0].AtUs);
+            }
+
+            if (next > _nowUs)
+            {
+                FirmwareHost.Check(FirmwareHost.AdvanceUs(_bus, (uint)(next - _nowUs)), "rcfw_advance_us");
+                _nowUs = next;
+            }
+
+            if (_nowUs >= _physicsUs + _physicsStepUs)
+            {
+                StepPhysics((_nowUs - _physicsUs) * 1e-6);
+                _physicsUs = _nowUs;
+            }
+
+            while (_resets.Count > 0 && _resets[0].AtUs <= _nowUs)
+            {
+                FirmwareHost.Check(FirmwareHost.Reset(_bus, _resets[0].Module, _resets[0].Cause), "rcfw_reset");
+                _resets.RemoveAt(0);
+            }
+        }
+
+        _clock.SetTimestamp(_clockOrigin + (_nowUs * 10));
+    }
+
+    private void StepPhysics(double dt)
+    {
+        foreach (var axis in _axes)
+        {
+            var pwm = FirmwareHost.GetPwm(_bus, axis.ModuleIndex, axis.Config.Channel);
+            var enabled = FirmwareHost.GetDriverEnable(_bus, axis.ModuleIndex, axis.Config.Channel) == 1;
+            axis.Pwm = pwm;
+            axis.DriverEnabled = enabled;
+            axis.Model.Step(pwm / 255.0, enabled, dt);
+
+            // Hall edges in order, as the pin interrupts would see them, however far the rotor turned.
+            var sector = Sector(axis);
+            var direction = Math.Sign(sector - axis.LastSector);
+            var guard = 0;
+            while (axis.LastSector != sector && guard++ < 64)
+            {
+                axis.LastSector += direction;
+                var code = HallSensors.Code(((axis.LastSector + 0.5) * Math.PI / 3) / axis.Motor.PolePairs, axis.Motor.PolePairs);
+                _ = FirmwareHost.SetHall(_bus, axis.ModuleIndex, axis.Config.Channel, code);
+            }
+
+            axis.LastSector = sector;
+        }
+
+        FeedSensors();
+    }
+
+    private void FeedSensors()
+    {
+        foreach (var axis in _axes)
+        {
+            var current = Math.Abs(axis.Model.Current) * axis.Config.RawPerAmp + _sensorNoise.Gaussian(_options.CurrentNoiseCounts);
+            _ = FirmwareHost.SetCurrentRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(current), 0, 4095));
+            var pot = axis.Config.Motor.Pot.Reading(axis.Model.OutputAngle) + _sensorNoise.Gaussian(_options.PotNoiseCounts);
+            _ = FirmwareHost.SetPotRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(pot), 0, 4095));
+        }
+    }
+
+    private int ApplyFaults(ReadOnlySpan<byte> source, Span<byte> destination)
+    {
+        var faults = WireFaults;
+        if (faults.BitErrorRate <= 0 && faults.ByteDropRate <= 0)
+        {
+            source.CopyTo(destination);
+            return source.Length;
+        }
+
+        var n = 0;
+        foreach (var b in source)
+        {
+            if (faults.ByteDropRate > 0 && _wireNoise.Uniform() < faults.ByteDropRate)
+            {
+                DroppedBytes++;
+                continue;
+            }
+
+            var value = b;
+            for (var bit = 0; bit < 8 && faults.BitErrorRate > 0; bit++)
+            {
+                if (_wireNoise.Uniform() < faults.BitErrorRate)
+                {
+                    value ^= (byte)(1 << bit);
+                }
+            }
+
+            if (value != b)
+            {
+                CorruptedBytes++;
+            }
+
+            destination[n++] = value;
+        }
+
+        return n;
+    }
+
+    private void Commission()
+    {
+        var table = ControlTable.Firmware;
+        using var client = new BusClient(new VirtualLink(this), _clock);
+        Span<byte> value = stackalloc byte[4];
+        foreach (var module in _modules)
+        {
+            foreach (var p in ModuleParameters.For(Definition, module, table).Where(p => p.Field.Name != "baud_rate"))
+            {
+                p.Field.Encode(p.Value, value);
+                var reply = client.Write(module.Id, p.Address, value[..p.Field.Size]);
+                if (!reply.Succeeded)
+                {
+                    throw new InvalidOperationException($"commissioning module {module.Id}: writing {p} failed ({reply})");
+                }
+            }
+
+            // A freshly calibrated module has never been homed: home every motor from its pot.
+            var mask = (byte)module.Motors.Aggregate(0, (acc, m) => acc | (1 << m.Channel));
+            var homed = client.Write(module.Id, table["home_request"].At(0), [mask]);
+            if (!homed.Succeeded)
+            {
+                throw new InvalidOperationException($"commissioning module {module.Id}: homing failed ({homed})");
+            }
+        }
+
+        // Last, the baud (it takes effect after the reply); then the host side follows.
+        if (BaudRate != FactoryBaud)
+        {
+            var code = ModuleParameters.BaudCode(BaudRate);
+            if (code < 0)
+            {
+                throw new ArgumentException($"{BaudRate} baud is not one the modules support");
+            }
+
+            foreach (var module in _modules)
+            {
+                var reply = client.Write(module.Id, table["baud_rate"].At(0), [(byte)code]);
+                if (!reply.Succeeded)
+                {
+                    throw new InvalidOperationException($"commissioning module {module.Id}: setting {BaudRate} baud failed ({reply})");
+                }
+            }
+
+            Advance(TimeSpan.FromMilliseconds(1));
+            FirmwareHost.Check(FirmwareHost.BusSetBaud(_bus, (uint)BaudRate), "rcfw_bus_set_baud");
+            _byteUs = 10e6 / BaudRate;
+        }
+
+        Advance(TimeSpan.FromMilliseconds(5));
+    }
+
+    private int ModuleIndex(byte id)
+    {
+        for (var i = 0; i < _modules.Length; i++)
+        {
+            if (_modules[i].Id == id)
+            {
+                return i;
+            }
+        }
+
+        throw new KeyNotFoundException($"the robot has no module with ID {id}");
+    }
+
+    private static int Sector(VirtualAxis axis) => (int)Math.Floor(axis.Model.RotorAngle * axis.Motor.PolePairs / (Math.PI / 3));
+
+    private double InitialOutput(RobotDefinition robot, MotorConfig config)
+    {
+        if (!config.Actuator.IsKinematic)
+        {
+            return _options.InitialJawRad ?? (0.5 * (robot.Tool.JawMinRad + robot.Tool.JawMaxRad));
+        }
+
+        var q = _options.InitialJointsRad is { } given && config.Arm < given.Count ? given[config.Arm] : robot.Joints.Select(j => j.MidRad).ToArray();
+        var a = 0.0;
+        for (var j = 0; j < robot.JointCount; j++)
+        {
+            a += config.Actuator.Coupling[j] * q[j];
+        }
+
+        return a;
+    }
+
+    // A link's inertia at the axis output, kg m^2: a few grams at a few centimetres (no mass data in the design).
+    private static double LinkInertia(ActuatorDefinition actuator) => actuator.IsKinematic ? 2e-5 : 1e-7;
+}

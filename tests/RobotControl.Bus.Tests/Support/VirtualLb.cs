@@ -1,0 +1,45 @@
+using RobotControl.Bus.Client;
+using RobotControl.Hardware.Loading;
+using RobotControl.Hardware.Model;
+using RobotControl.Robot.Bus;
+using RobotControl.Simulation;
+using RobotControl.Simulation.Time;
+
+namespace RobotControl.Bus.Tests.Support;
+
+/// <summary>A virtual LB-1.0 and the robot layer on it, on a manual clock.</summary>
+internal sealed class VirtualLb : IDisposable
+{
+    private static readonly Lazy<RobotDefinition> s_lb = new(() => RobotLoader.Load(RepoPaths.Robot("lb-1.0.json")));
+
+    public VirtualLb(VirtualRobotOptions? options = null, RobotDefinition? hostView = null, bool start = true)
+    {
+        Definition = s_lb.Value;
+        Clock = new ManualTimeProvider();
+        Sim = new VirtualRobot(Definition, Clock, options);
+        Robot = new BusRobot(hostView ?? Definition, new BusClient(Sim.OpenLink(), Clock));
+        if (start)
+        {
+            Discovery = Robot.Discover();
+            Robot.EnableTorque(true);
+        }
+    }
+
+    public static RobotDefinition Lb => s_lb.Value;
+
+    public RobotDefinition Definition { get; }
+
+    public ManualTimeProvider Clock { get; }
+
+    public VirtualRobot Sim { get; }
+
+    public BusRobot Robot { get; }
+
+    public DiscoveryReport? Discovery { get; }
+
+    public void Dispose()
+    {
+        Robot.Dispose();
+        Sim.Dispose();
+    }
+}

@@ -1,0 +1,76 @@
+using RobotControl.Plugins.Standard.Conditioning;
+using RobotControl.Plugins.Touch;
+using RobotControl.Runtime.Discovery;
+using RobotControl.Runtime.Harness;
+using RobotControl.Runtime.Tests.Support;
+
+namespace RobotControl.Runtime.Tests.Harness;
+
+public sealed class HeadlessRunTests
+{
+    private static PluginCatalog Catalog() => PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
+
+    [Theory]
+    [InlineData("graphs/teleop-lb.json")]
+    [InlineData("graphs/teleop-crb.json")]
+    public void The_teleoperation_demo_tracks_on_the_virtual_robot_without_deadline_misses(string graph)
+    {
+        // 8 s covers the circle (60 mm/s at the tool), a clutch press and most of the figure-eight (up to 70 mm/s).
+        var report = HeadlessRun.Run(new RunOptions { GraphPath = Repo.Path(graph), Duration = TimeSpan.FromSeconds(8) }, Catalog());
+
+        Assert.Equal(8000, report.Ticks);
+        Assert.Equal(0, report.DeadlineMisses);
+        Assert.Empty(report.Faults);
+        Assert.InRange(report.TrackingRmsMm, 0.01, 2.0);
+        Assert.True(report.TrackingMaxMm < 5.0, $"max tracking error {report.TrackingMaxMm} mm");
+        Assert.True(report.Bus.Frames > 8000);
+        Assert.Equal(0, report.Bus.CrcErrors);
+    }
+
+    [Fact]
+    public void The_report_has_the_documented_schema()
+    {
+        var json = new RunReport(1, 2, 3, 4, 5, 6, 7, 8, new BusReport(9, 10, 11, 12), [new FaultEntry(0.5, "robot", "module 1 reset")]).ToJson();
+        using var doc = System.Text.Json.JsonDocument.Parse(json);
+        var root = doc.RootElement;
+
+        Assert.Equal(["duration_s", "ticks", "deadline_misses", "tick_us", "tracking_error_mm", "bus", "faults"], root.EnumerateObject().Select(p => p.Name));
+        Assert.Equal(["median", "p99", "max"], root.GetProperty("tick_us").EnumerateObject().Select(p => p.Name));
+        Assert.Equal(["rms", "max"], root.GetProperty("tracking_error_mm").EnumerateObject().Select(p => p.Name));
+        Assert.Equal(["frames", "crc_errors", "timeouts", "retries"], root.GetProperty("bus").EnumerateObject().Select(p => p.Name));
+        Assert.Equal("module 1 reset", root.GetProperty("faults")[0].GetProperty("message").GetString());
+    }
+
+    [Fact]
+    public void Fault_injection_text_is_parsed_and_checked()
+    {
+        var inject = FaultInjection.Parse("ber=1e-5, reset=right.shoulder@5s,reset=12@750ms");
+
+        Assert.Equal(1e-5, inject.BitErrorRate);
+        Assert.Equal([new ModuleReset("right.shoulder", TimeSpan.FromSeconds(5)), new ModuleReset("12", TimeSpan.FromMilliseconds(750))], inject.Resets);
+        Assert.Throws<FormatException>(() => FaultInjection.Parse("ber=2"));
+        Assert.Throws<FormatException>(() => FaultInjection.Parse("reset=right.shoulder"));
+        Assert.Throws<FormatException>(() => FaultInjection.Parse("emp=3"));
+    }
+}
+
+public sealed class ShippedGraphTests
+{
+    [Theory]
+    [InlineData("graphs/teleop-lb.json", 5)]
+    [InlineData("graphs/teleop-crb.json", 4)]
+    public void The_shipped_graphs_load_save_back_identically_and_start_where_the_virtual_robot_rests(string graph, int joints)
+    {
+        var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
+        var loaded = RobotControl.Runtime.GraphFiles.GraphFile.Load(Repo.Path(graph), catalog, TimeProvider.System);
+        var saved = RobotControl.Runtime.GraphFiles.GraphFile.ToJson(loaded.Document);
+        var reloaded = RobotControl.Runtime.GraphFiles.GraphFile.LoadFromText(saved, Repo.Path(graph), catalog, TimeProvider.System);
+
+        Assert.Equal(saved, RobotControl.Runtime.GraphFiles.GraphFile.ToJson(reloaded.Document));
+        Assert.Equal(loaded.Document.Instances, reloaded.Document.Instances);
+        Assert.Equal(2, loaded.Document.Wires.Count(w => w.To.StartsWith("touch_", StringComparison.Ordinal) && w.Delayed) / 3);
+        var initial = HeadlessRun.InitialCommand(loaded);
+        Assert.All(initial, q => Assert.Equal(joints, q.Length));
+        Assert.Equal(-30 * Math.PI / 180, initial[0][0], 9);
+    }
+}

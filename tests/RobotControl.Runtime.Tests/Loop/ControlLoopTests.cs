@@ -1,0 +1,81 @@
+using RobotControl.Plugins.Sdk;
+using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.Loop;
+using RobotControl.Runtime.Tests.Support;
+
+namespace RobotControl.Runtime.Tests.Loop;
+
+public sealed class ControlLoopTests
+{
+    private sealed class ClockHog(string name, SteppedClock clock, long atTick) : Plugin(PluginContext.Standalone(name))
+    {
+        public override void Tick(in TickContext context)
+        {
+            if (context.Index == atTick)
+            {
+                clock.Advance(TimeSpan.FromMilliseconds(3.5)); // this tick "takes" 3.5 periods on the loop clock
+            }
+        }
+    }
+
+    [Fact]
+    public void Stepped_on_a_virtual_clock_the_loop_ticks_once_per_period_with_loop_time_and_no_misses()
+    {
+        var clock = new SteppedClock();
+        var graph = new PluginGraph();
+        var sink = new Gain("sink");
+        graph.Add(new CounterSource("src"));
+        graph.Add(sink);
+        graph.Connect("src.value", "sink.in");
+        using var loop = new ControlLoop(graph.Compile(), clock, 1000);
+
+        for (var i = 0; i < 100; i++)
+        {
+            loop.Step();
+            clock.Advance(loop.Period);
+        }
+
+        Assert.Equal(100, loop.TickCount);
+        Assert.Equal(100, loop.Statistics.Count);
+        Assert.Equal(0, loop.Statistics.DeadlineMisses);
+        Assert.Equal(Enumerable.Range(0, 100).Select(i => (double)i), sink.Seen);
+        Assert.True(loop.Statistics.MedianUs > 0 && loop.Statistics.P99Us <= loop.Statistics.MaxUs);
+    }
+
+    [Fact]
+    public void A_tick_that_overruns_its_period_on_the_loop_clock_counts_deadline_misses()
+    {
+        var clock = new SteppedClock();
+        var graph = new PluginGraph();
+        graph.Add(new ClockHog("hog", clock, atTick: 5));
+        using var loop = new ControlLoop(graph.Compile(), clock, 1000);
+
+        for (var i = 0; i < 10; i++)
+        {
+            loop.Step();
+            clock.Advance(TimeSpan.FromTicks(Math.Max(0, loop.NextDueTimestamp - clock.GetTimestamp())));
+        }
+
+        Assert.Equal(3, loop.Statistics.DeadlineMisses); // ends 2.5 periods late: this tick plus two skipped slots
+    }
+
+    [Fact]
+    public void On_its_own_thread_the_loop_runs_at_its_rate_on_the_system_clock()
+    {
+        var graph = new PluginGraph();
+        graph.Add(new CounterSource("src"));
+        using var loop = new ControlLoop(graph.Compile(), TimeProvider.System, 1000);
+
+        var begin = TimeProvider.System.GetTimestamp();
+        loop.Start();
+        Thread.Sleep(300);
+        loop.Stop();
+        var periods = TimeProvider.System.GetElapsedTime(begin).TotalMilliseconds;
+
+        // Other work shares this machine's cores, so ticks may be skipped; but every period is either ticked or
+        // counted as missed, and the loop never runs ahead of its clock.
+        Assert.Null(loop.ThreadFailure);
+        Assert.InRange(loop.TickCount, 30, periods + 1);
+        Assert.InRange(loop.TickCount + loop.Statistics.DeadlineMisses, periods * 0.8, (periods * 2) + 1);
+    }
+}

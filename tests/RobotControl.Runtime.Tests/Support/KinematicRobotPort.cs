@@ -1,0 +1,45 @@
+using RobotControl.Hardware.Model;
+using RobotControl.Robot.Control;
+
+namespace RobotControl.Runtime.Tests.Support;
+
+/// <summary>Test double: an ideal robot whose joints are wherever they were last commanded.</summary>
+internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort
+{
+    private readonly double[][] _joints = [.. robot.Arms.Select(_ => robot.Joints.Select(j => j.MidRad).ToArray())];
+
+    public RobotDefinition Definition { get; } = robot;
+
+    public int ArmCount => Definition.Arms.Count;
+
+    public RobotFaults Faults { get; private set; }
+
+    public int Writes { get; private set; }
+
+    public int Holds { get; private set; }
+
+    public void WriteJointSetpoints(int arm, ReadOnlySpan<double> jointsRad)
+    {
+        foreach (var v in jointsRad)
+        {
+            if (!double.IsFinite(v))
+            {
+                Faults |= RobotFaults.SetpointRejected;
+                return;
+            }
+        }
+
+        Writes++;
+        jointsRad.CopyTo(_joints[arm]);
+    }
+
+    public void WriteJawSetpoint(int arm, double jawRad)
+    {
+    }
+
+    public void ReadJointPositions(int arm, Span<double> jointsRad) => _joints[arm].CopyTo(jointsRad);
+
+    public void ReadMotorCurrents(int arm, Span<double> currentsA) => currentsA.Clear();
+
+    public void HoldPosition() => Holds++;
+}
