@@ -1,3 +1,4 @@
+using Microsoft.Extensions.Time.Testing;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Loop;
@@ -7,7 +8,7 @@ namespace RobotControl.Runtime.Tests.Loop;
 
 public sealed class ControlLoopTests
 {
-    private sealed class ClockHog(string name, SteppedClock clock, long atTick) : Plugin(PluginContext.Standalone(name))
+    private sealed class ClockHog(string name, FakeTimeProvider clock, long atTick) : Plugin(PluginContext.Standalone(name))
     {
         public override void Tick(in TickContext context)
         {
@@ -21,7 +22,7 @@ public sealed class ControlLoopTests
     [Fact]
     public void Stepped_on_a_virtual_clock_the_loop_ticks_once_per_period_with_loop_time_and_no_misses()
     {
-        var clock = new SteppedClock();
+        var clock = new FakeTimeProvider();
         var graph = new PluginGraph();
         var sink = new Gain("sink");
         graph.Add(new CounterSource("src"));
@@ -45,7 +46,7 @@ public sealed class ControlLoopTests
     [Fact]
     public void A_tick_that_overruns_its_period_on_the_loop_clock_counts_deadline_misses()
     {
-        var clock = new SteppedClock();
+        var clock = new FakeTimeProvider();
         var graph = new PluginGraph();
         graph.Add(new ClockHog("hog", clock, atTick: 5));
         using var loop = new ControlLoop(graph.Compile(), clock, 1000);
