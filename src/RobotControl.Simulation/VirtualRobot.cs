@@ -166,6 +166,34 @@ public sealed unsafe class VirtualRobot : IDisposable
     /// <summary>Switches module <paramref name="moduleId"/> off and on (RAM lost, FRAM kept).</summary>
     public void PowerCycle(byte moduleId) => FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, ModuleIndex(moduleId)), "rcfw_power_cycle");
 
+    /// <summary>
+    /// Switches <paramref name="axis"/>'s module off, turns the axis by hand to <paramref name="outputRad"/> (its
+    /// firmware counts no Hall edges meanwhile) and switches the module on again: it resumes the position it saved,
+    /// which no longer matches the joint, and its pot tells (pot mismatch).
+    /// </summary>
+    /// <exception cref="ArgumentException">The axis belongs to another robot, or the angle is not finite.</exception>
+    public void TurnWhileOff(VirtualAxis axis, double outputRad)
+    {
+        ArgumentNullException.ThrowIfNull(axis);
+        if (Array.IndexOf(_axes, axis) < 0)
+        {
+            throw new ArgumentException($"axis {axis.Config.FullName} is not part of this virtual robot", nameof(axis));
+        }
+
+        if (!double.IsFinite(outputRad))
+        {
+            throw new ArgumentException($"the angle to turn {axis.Config.FullName} to must be finite", nameof(outputRad));
+        }
+
+        axis.Model.Reset(outputRad);
+        axis.LastSector = Sector(axis);
+        // The Hall edge this causes reaches firmware that is about to lose its RAM: the power cycle restarts it from
+        // FRAM (saved no later than the last simulated millisecond), reading the sensors as they are now.
+        _ = FirmwareHost.SetHall(_bus, axis.ModuleIndex, axis.Config.Channel, HallSensors.Code(axis.Model.RotorAngle, axis.Motor.PolePairs));
+        FeedSensors();
+        FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, axis.ModuleIndex), "rcfw_power_cycle");
+    }
+
     /// <summary>Reads bytes of module <paramref name="moduleId"/>'s control table directly (not over the bus).</summary>
     public void PeekTable(byte moduleId, ushort address, Span<byte> destination)
     {

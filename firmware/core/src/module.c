@@ -39,6 +39,11 @@ static inline void ct_w32(rcfw_module *m, uint16_t a, int32_t v)
 }
 #define MA(field, i) ((uint16_t)(RCFW_CT_##field + (i) * RCFW_CT_##field##_STRIDE))
 
+/* The tick ORs every motor's error bits into hardware_error_status: they must mean the same there. */
+_Static_assert(RCFW_MERR_OVERCURRENT == RCFW_HWERR_OVERCURRENT && RCFW_MERR_HALL == RCFW_HWERR_HALL &&
+                   RCFW_MERR_POT == RCFW_HWERR_POT_MISMATCH && RCFW_MERR_POSITION_LOST == RCFW_HWERR_POSITION_LOST,
+               "motor error bits are hardware_error_status bits");
+
 static int32_t field_value(const rcfw_ct_field *f, uint32_t raw)
 {
     if ((f->flags & RCFW_CT_F_SIGNED) && f->size < 4u) {
@@ -244,7 +249,7 @@ void rcfw_module_init(rcfw_module *m, struct rcfw_port *port, uint8_t n_motors, 
         } else {
             pos = calibrated ? pot_pos : 0;
             goal = pos;
-            hw |= RCFW_HWERR_POSITION_LOST;
+            mo->errors |= RCFW_MERR_POSITION_LOST; /* until the host homes it (home_request) or clears */
         }
         rcfw_motor_set_position(mo, pos, hall);
         ct_w32(m, MA(GOAL_POSITION, i), goal);
@@ -296,7 +301,7 @@ void rcfw_module_tick(rcfw_module *m)
         int16_t pwm = rcfw_motor_tick(mo, rcfw_hal_adc_current(m->port, i), m->ema_k, m->limit_step);
         rcfw_hal_pwm_set(m->port, i, pwm);
         rcfw_hal_bridge_enable(m->port, i, mo->enabled != 0u);
-        m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] |= mo->errors; /* MERR bits == HWERR bits 0..2 */
+        m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] |= mo->errors; /* MERR bits are HWERR bits */
     }
     if (m->wd_limit_ticks != 0u && !(m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] & RCFW_HWERR_BUS_WATCHDOG)) {
         if (++m->wd_ticks >= m->wd_limit_ticks) {
@@ -344,29 +349,67 @@ bool rcfw_module_take_reboot(rcfw_module *m)
     return r;
 }
 
-/* Home the motors in mask from their pots now (calibration checked by the caller). */
+/* A write being validated: bytes addr..end-1 become data. */
+typedef struct {
+    uint16_t addr;
+    uint16_t end;
+    const uint8_t *data;
+} pending_write;
+
+/* Byte a of the table as it will be once the pending write is applied. */
+static uint8_t ct8_after(const rcfw_module *m, const pending_write *w, uint16_t a)
+{
+    return a >= w->addr && a < w->end ? w->data[a - w->addr] : m->ct[a];
+}
+
+/* A home_request of mask is allowed if every requested motor exists, has a pot calibration and is not
+ * driven (judged on the table as the same write leaves it). A driven motor is refused rather than
+ * re-homed under power: its new coordinates would turn the host's next goal (still in the old ones)
+ * into a sudden move. */
+static bool home_allowed(const rcfw_module *m, const pending_write *w, uint8_t mask)
+{
+    for (uint8_t i = 0; i < RCFW_CT_MAX_MOTORS; i++) {
+        if (!((mask >> i) & 1u)) {
+            continue;
+        }
+        if (i >= m->n_motors || ct8_after(m, w, MA(POT_CAL_COUNT, i)) < 2u ||
+            ct8_after(m, w, MA(TORQUE_ENABLE, i)) != 0u) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Recompute the module's pot-mismatch and position-lost bits from the motors (other bits stay latched). */
+static void refresh_position_errors(rcfw_module *m)
+{
+    const uint8_t bits = RCFW_HWERR_POT_MISMATCH | RCFW_HWERR_POSITION_LOST;
+    uint8_t still = 0;
+    for (uint8_t i = 0; i < m->n_motors; i++) {
+        still |= m->motor[i].errors & bits;
+        m->ct[MA(MOTOR_ERROR, i)] = m->motor[i].errors;
+    }
+    m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] = (uint8_t)((m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] & ~bits) | still);
+}
+
+/* Home the motors in mask from their pots now (home_allowed() passed): position, setpoint and goal
+ * become the pot position, so nothing moves when torque comes on; the record is saved before the reply. */
 static void home_from_pots(rcfw_module *m, uint8_t mask)
 {
     for (uint8_t i = 0; i < m->n_motors; i++) {
-        int32_t pos;
         if (!((mask >> i) & 1u)) {
             continue;
         }
         uint16_t pot = rcfw_hal_adc_pot(m->port, i);
         ct_w16(m, MA(POT_RAW, i), pot);
-        if (!rcfw_pot_to_position(m, i, pot, &pos)) {
-            continue;
-        }
+        int32_t pos = 0;
+        bool calibrated = rcfw_pot_to_position(m, i, pot, &pos);
+        RCFW_ASSERT(calibrated); /* home_allowed() checked the calibration */
         rcfw_motor_set_position(&m->motor[i], pos, m->hall_last[i]);
-        m->motor[i].errors &= (uint8_t)~RCFW_MERR_POT;
+        m->motor[i].errors &= (uint8_t)~(RCFW_MERR_POT | RCFW_MERR_POSITION_LOST);
         ct_w32(m, MA(GOAL_POSITION, i), pos);
     }
-    uint8_t still = 0;
-    for (uint8_t i = 0; i < m->n_motors; i++) {
-        still |= m->motor[i].errors & RCFW_MERR_POT;
-        m->ct[MA(MOTOR_ERROR, i)] = m->motor[i].errors;
-    }
-    m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] &= (uint8_t)~(RCFW_HWERR_POSITION_LOST | (still ? 0u : RCFW_HWERR_POT_MISMATCH));
+    refresh_position_errors(m);
     uint8_t img[RCFW_RUNTIME_LEN];
     runtime_image(m, img);
     if (rcfw_store_save(&m->runtime, m->port, img)) {
@@ -382,6 +425,7 @@ static uint8_t table_write(rcfw_module *m, uint16_t addr, const uint8_t *data, u
     RCFW_VERIFY(len > 0u, m->stats.bad_requests, RCFW_ERR_DATA_LENGTH);
     RCFW_VERIFY((uint32_t)addr + len <= RCFW_CT_SIZE, m->stats.bad_requests, RCFW_ERR_DATA_RANGE);
     uint16_t end = (uint16_t)(addr + len);
+    const pending_write w = {addr, end, data};
     for (uint16_t a = addr; a < end; a++) {
         uint8_t o = rcfw_ct_owner[a];
         RCFW_VERIFY(o != 0u && (rcfw_ct_fields[o - 1u].flags & RCFW_CT_F_WRITABLE), m->stats.bad_requests,
@@ -404,10 +448,7 @@ static uint8_t table_write(rcfw_module *m, uint16_t addr, const uint8_t *data, u
                                                                     : (v >= f->min && v <= f->max);
         RCFW_VERIFY(ok, m->stats.bad_requests, RCFW_ERR_DATA_LIMIT);
         if (start == RCFW_CT_HOME_REQUEST) {
-            for (uint8_t i = 0; i < RCFW_CT_MAX_MOTORS; i++) {
-                bool bad = i >= m->n_motors || ct8(m, MA(POT_CAL_COUNT, i)) < 2u;
-                RCFW_VERIFY(!((v >> i) & 1) || !bad, m->stats.bad_requests, RCFW_ERR_RESULT_FAIL);
-            }
+            RCFW_VERIFY(home_allowed(m, &w, (uint8_t)v), m->stats.bad_requests, RCFW_ERR_RESULT_FAIL);
         }
         if (start >= RCFW_CT_TORQUE_ENABLE && start < RCFW_CT_TORQUE_ENABLE + RCFW_CT_MAX_MOTORS && v != 0) {
             RCFW_VERIFY(!(m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] & RCFW_HWERR_BUS_WATCHDOG), m->stats.bad_requests,

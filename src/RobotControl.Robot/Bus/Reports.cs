@@ -54,16 +54,45 @@ public sealed record ParameterMismatch(byte ModuleId, ParameterValue Expected, l
 
 /// <summary>The outcome of homing one motor from its pot.</summary>
 /// <param name="Motor">The motor.</param>
-/// <param name="PotRaw">The pot reading.</param>
-/// <param name="PotPositionRad">The output angle the pot calibration gives.</param>
-/// <param name="PositionRad">The output angle the module now reports.</param>
-/// <param name="HomedNow">True when the module (re)took its position from the pot.</param>
-public sealed record HomingResult(RobotMotor Motor, int PotRaw, double PotPositionRad, double PositionRad, bool HomedNow)
+/// <param name="Outcome">What happened; only <see cref="HomingOutcome.Homed"/> means the position is now the pot's.</param>
+/// <param name="PotRaw">The pot reading after the request (-1: not read).</param>
+/// <param name="PotPositionRad">The output angle the pot gives through the module's calibration (NaN: uncalibrated or not read).</param>
+/// <param name="PositionRad">The output angle the module reports after the request (NaN: not read).</param>
+/// <param name="MotorErrors">The motor's latched error bits after the request (<c>motor_error</c>).</param>
+/// <param name="Detail">Why the outcome is not <see cref="HomingOutcome.Homed"/>; empty when it is.</param>
+public sealed record HomingResult(
+    RobotMotor Motor,
+    HomingOutcome Outcome,
+    int PotRaw,
+    double PotPositionRad,
+    double PositionRad,
+    HardwareErrors MotorErrors,
+    string Detail)
 {
-    /// <summary>Position minus pot, radians.</summary>
+    /// <summary>True when the motor was homed and the result verified.</summary>
+    public bool Succeeded => Outcome == HomingOutcome.Homed;
+
+    /// <summary>Position minus pot, radians (NaN when either is unknown).</summary>
     public double ErrorRad => PositionRad - PotPositionRad;
 
     /// <inheritdoc />
-    public override string ToString() =>
-        $"{Motor.Config.FullName,-28} pot {PotRaw,4} -> {PotPositionRad * 180 / Math.PI,8:F2} deg, position {PositionRad * 180 / Math.PI,8:F2} deg ({(HomedNow ? "homed from pot" : "kept")}, diff {ErrorRad * 180 / Math.PI:F2} deg)";
+    public override string ToString()
+    {
+        static string Deg(double rad) => double.IsNaN(rad) ? "       ?" : $"{rad * 180 / Math.PI,8:F2}";
+        var verdict = Outcome switch
+        {
+            HomingOutcome.Homed => "homed",
+            HomingOutcome.NotCalibrated => "NOT CALIBRATED",
+            HomingOutcome.Refused => "REFUSED",
+            HomingOutcome.VerifyFailed => "NOT VERIFIED",
+            _ => "NO REPLY",
+        };
+        var line = $"{Motor.Config.FullName,-28} {verdict,-14} pot {(PotRaw < 0 ? "   ?" : $"{PotRaw,4}")} -> {Deg(PotPositionRad)} deg, position {Deg(PositionRad)} deg";
+        if (!double.IsNaN(ErrorRad))
+        {
+            line += $" (diff {ErrorRad * 180 / Math.PI:F2} deg)";
+        }
+
+        return Detail.Length == 0 ? line : $"{line}: {Detail}";
+    }
 }

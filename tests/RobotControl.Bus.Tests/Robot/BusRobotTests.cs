@@ -88,7 +88,7 @@ public sealed class BusRobotTests
         Assert.Equal(12, results.Count);
         foreach (var r in results)
         {
-            Assert.True(r.HomedNow);
+            Assert.Equal(HomingOutcome.Homed, r.Outcome);
             var truth = lb.Sim.Axes.Single(a => a.Config.FullName == r.Motor.Config.FullName).OutputAngleRad;
             Assert.InRange(r.PositionRad - truth, -0.5 * Deg, 0.5 * Deg);
             Assert.InRange(r.ErrorRad, -0.5 * Deg, 0.5 * Deg);

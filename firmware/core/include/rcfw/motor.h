@@ -9,6 +9,9 @@
 #define RCFW_MERR_OVERCURRENT 0x01u
 #define RCFW_MERR_HALL 0x02u
 #define RCFW_MERR_POT 0x04u
+/* position not restored after a reset (taken from the pot, or 0 uncalibrated) and not homed since;
+ * same bit as the module's RCFW_HWERR_POSITION_LOST so the tick can OR motor errors in */
+#define RCFW_MERR_POSITION_LOST 0x20u
 
 #define RCFW_MODE_POSITION 0u
 #define RCFW_MODE_PWM 1u

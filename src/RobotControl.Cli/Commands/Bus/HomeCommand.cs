@@ -2,7 +2,10 @@ using System.CommandLine;
 
 namespace RobotControl.Cli.Commands.Bus;
 
-/// <summary><c>robotctl home &lt;transport&gt;</c>: homes every motor from its pot and prints pot and position side by side.</summary>
+/// <summary>
+/// <c>robotctl home &lt;transport&gt;</c>: homes every motor from its pot (motors off) and prints, per motor, whether it
+/// was homed and verified, with pot and position side by side. Exit code 1 if a module is missing or a motor was not homed.
+/// </summary>
 internal sealed class HomeCommand : ICliCommand
 {
     /// <inheritdoc />
@@ -27,12 +30,17 @@ internal sealed class HomeCommand : ICliCommand
                     output.WriteLine(line);
                 }
 
-                foreach (var r in bus.Home())
+                var results = bus.Home();
+                foreach (var r in results)
                 {
                     output.WriteLine(r.ToString());
                 }
 
-                return report.Missing.Count == 0 ? 0 : 1;
+                var failed = results.Count(r => !r.Succeeded);
+                output.WriteLine(failed == 0
+                    ? $"{results.Count} motors homed from their pots"
+                    : $"{failed} of {results.Count} motors NOT homed (see above)");
+                return report.Missing.Count == 0 && failed == 0 ? 0 : 1;
             });
         });
         return command;
