@@ -15,16 +15,20 @@ public static class LinkFactory
 
     /// <summary>Opens the link a parsed transport names.</summary>
     /// <exception cref="IOException">The device cannot be found or opened.</exception>
-    public static IByteLink Open(LinkUri uri)
+    public static IByteLink Open(LinkUri uri) => Open(uri, "/sys", "/dev");
+
+    /// <summary>Opens the link a parsed transport names, looking for USB adapters under the given sysfs and /dev roots.</summary>
+    internal static IByteLink Open(LinkUri uri, string sysRoot, string devRoot)
     {
         ArgumentNullException.ThrowIfNull(uri);
         switch (uri.Kind)
         {
             case LinkKind.Serial:
-                return PosixSerialLink.Open(uri.Target, uri.BaudRate, uri.Parity, uri.Rs485);
+                return SerialLink.Open(uri.Target, uri.BaudRate, uri.Parity, uri.Rs485);
             case LinkKind.Usb:
+                // A USB-RS485 adapter is a serial device once found: same link, same options.
                 var (vendor, product, serial) = uri.UsbIds();
-                return PosixSerialLink.Open(UsbSerialResolver.Resolve(vendor, product, serial), uri.BaudRate, uri.Parity, uri.Rs485);
+                return SerialLink.Open(UsbSerialResolver.Resolve(vendor, product, serial, sysRoot, devRoot), uri.BaudRate, uri.Parity, uri.Rs485);
             case LinkKind.Tcp:
                 var (host, port) = uri.TcpEndpoint();
                 return TcpLink.Connect(host, port, uri.BaudRate, TimeSpan.FromSeconds(3));

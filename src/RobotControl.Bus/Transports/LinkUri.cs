@@ -31,10 +31,20 @@ public enum SerialParity
     Odd,
 }
 
+/// <summary>Who switches an RS-485 transceiver between sending and receiving (half-duplex turn-around).</summary>
+public enum Rs485DriverEnable
+{
+    /// <summary>The adapter does it by itself (FTDI USB-RS485 cables and most USB-RS485 adapters): nothing to do.</summary>
+    Auto,
+
+    /// <summary>The host asserts RTS while it sends (RTS wired to the transceiver's driver-enable).</summary>
+    Rts,
+}
+
 /// <summary>
 /// A parsed transport string: <c>kind:target?key=value&amp;...</c>. Options: <c>baud</c> (all kinds; default 1000000),
-/// <c>parity</c> (none|even|odd), <c>rs485</c> (true: let the kernel drive the adapter's RS-485 driver-enable),
-/// <c>seed</c> and <c>realtime</c> (virtual).
+/// <c>parity</c> (none|even|odd), <c>rs485</c> (auto|rts: who drives the RS-485 driver-enable, see
+/// <see cref="Rs485DriverEnable"/>), <c>seed</c> and <c>realtime</c> (virtual).
 /// </summary>
 public sealed record LinkUri
 {
@@ -63,8 +73,8 @@ public sealed record LinkUri
     /// <summary>Parity (<c>parity</c> option).</summary>
     public SerialParity Parity => Options.TryGetValue("parity", out var p) ? Enum.Parse<SerialParity>(p, ignoreCase: true) : SerialParity.None;
 
-    /// <summary>True when the kernel should drive RS-485 driver-enable (<c>rs485=true</c>).</summary>
-    public bool Rs485 => Options.TryGetValue("rs485", out var v) && bool.Parse(v);
+    /// <summary>Who drives the RS-485 driver-enable (<c>rs485</c> option; default <see cref="Rs485DriverEnable.Auto"/>).</summary>
+    public Rs485DriverEnable Rs485 => Options.TryGetValue("rs485", out var v) ? Enum.Parse<Rs485DriverEnable>(v, ignoreCase: true) : Rs485DriverEnable.Auto;
 
     /// <summary>Parses a transport string.</summary>
     /// <exception cref="FormatException">The string names no known kind or its target or options are malformed.</exception>
@@ -154,9 +164,9 @@ public sealed record LinkUri
             throw new FormatException($"transport '{text}': parity '{parity}' must be none, even or odd");
         }
 
-        if (Options.TryGetValue("rs485", out var rs) && !bool.TryParse(rs, out _))
+        if (Options.TryGetValue("rs485", out var rs) && !(rs.Equals("auto", StringComparison.OrdinalIgnoreCase) || rs.Equals("rts", StringComparison.OrdinalIgnoreCase)))
         {
-            throw new FormatException($"transport '{text}': rs485 '{rs}' must be true or false");
+            throw new FormatException($"transport '{text}': rs485 '{rs}' must be auto (the adapter switches direction itself, the default) or rts (the host raises RTS while it sends)");
         }
 
         switch (Kind)

@@ -40,7 +40,7 @@ public sealed class PtyEndToEndTests
                 Thread.Sleep(20);
             }
 
-            using var port = PosixSerialLink.Open(simEnd, 1_000_000);
+            using var port = SerialLink.Open(simEnd, 1_000_000);
             RunScenario(port, hostEnd);
         }
         finally

@@ -7,12 +7,13 @@ public sealed class LinkUriTests
     [Fact]
     public void Serial_with_options()
     {
-        var uri = LinkUri.Parse("serial:/dev/ttyUSB0?baud=3000000&parity=even&rs485=true");
+        var uri = LinkUri.Parse("serial:/dev/ttyUSB0?baud=3000000&parity=even&rs485=rts");
         Assert.Equal(LinkKind.Serial, uri.Kind);
         Assert.Equal("/dev/ttyUSB0", uri.Target);
         Assert.Equal(3_000_000, uri.BaudRate);
         Assert.Equal(SerialParity.Even, uri.Parity);
-        Assert.True(uri.Rs485);
+        Assert.Equal(Rs485DriverEnable.Rts, uri.Rs485);
+        Assert.Equal(Rs485DriverEnable.Auto, LinkUri.Parse("serial:/dev/ttyUSB0").Rs485);
     }
 
     [Fact]
@@ -34,6 +35,7 @@ public sealed class LinkUriTests
     [InlineData("tcp:localhost", "port")]
     [InlineData("usb:xyz:6001", "vendor")]
     [InlineData("serial:", "empty")]
+    [InlineData("serial:/dev/x?rs485=true", "auto (the adapter switches direction itself")]
     public void Malformed_strings_say_what_is_wrong(string text, string fragment)
     {
         var ex = Assert.Throws<FormatException>(() => LinkUri.Parse(text));

@@ -5,10 +5,15 @@ namespace RobotControl.Bus.Transports.Serial;
 /// <summary>
 /// A pseudo-terminal pair made with posix_openpt/grantpt/unlockpt/ptsname: the master end (this object's
 /// <see cref="IByteLink"/>) plays the bus; programs open <see cref="SlavePath"/> as if it were a serial adapter.
-/// The slave end is held open (in raw mode) so the master keeps working while clients come and go.
+/// The slave end is held open (in raw mode) so the master keeps working while clients come and go. This is the
+/// simulator's side of a virtual bus; hosts open the slave through <see cref="SerialLink"/> like any serial device.
 /// </summary>
 public sealed unsafe class PseudoTerminal : IByteLink
 {
+    // termios flag bits (octal in the C headers).
+    private const uint CSize = 0x30, Cs8 = 0x30, CRead = 0x80, ParEnb = 0x100, CLocal = 0x800;
+    private const int VTime = 5, VMin = 6;
+
     private int _master;
     private int _slave;
 
@@ -58,7 +63,16 @@ public sealed unsafe class PseudoTerminal : IByteLink
                 throw Libc.Error($"open {path}");
             }
 
-            PosixSerialLink.ConfigureRaw(slave, LinkUri.DefaultBaud, SerialParity.None);
+            try
+            {
+                MakeRaw(slave, path);
+            }
+            catch
+            {
+                Libc.Close(slave);
+                throw;
+            }
+
             return new PseudoTerminal(master, slave, path);
         }
         catch
@@ -71,26 +85,21 @@ public sealed unsafe class PseudoTerminal : IByteLink
     /// <inheritdoc />
     public void Write(ReadOnlySpan<byte> data)
     {
-        fixed (byte* p = data)
+        while (!data.IsEmpty)
         {
-            var done = 0;
-            while (done < data.Length)
+            var n = Libc.Write(_master, data);
+            if (n > 0)
             {
-                var n = Libc.Write(_master, p + done, data.Length - done);
-                if (n <= 0)
-                {
-                    var errno = Marshal.GetLastPInvokeError();
-                    if (errno is not (Libc.EAgain or Libc.EIntr))
-                    {
-                        throw Libc.Error("write to pty master");
-                    }
-
-                    Libc.Poll(_master, Libc.PollOut, TimeSpan.FromMilliseconds(10));
-                    continue;
-                }
-
-                done += (int)n;
+                data = data[n..];
+                continue;
             }
+
+            if (Marshal.GetLastPInvokeError() is not (Libc.EAgain or Libc.EIntr))
+            {
+                throw Libc.Error($"write to the pty master of {SlavePath}");
+            }
+
+            Libc.Poll(_master, Libc.PollOut, TimeSpan.FromMilliseconds(10));
         }
     }
 
@@ -103,11 +112,7 @@ public sealed unsafe class PseudoTerminal : IByteLink
             return 0;
         }
 
-        fixed (byte* p = buffer)
-        {
-            var n = Libc.Read(_master, p, buffer.Length);
-            return n > 0 ? (int)n : 0;
-        }
+        return Math.Max(0, Libc.Read(_master, buffer));
     }
 
     /// <inheritdoc />
@@ -126,6 +131,37 @@ public sealed unsafe class PseudoTerminal : IByteLink
         if (master >= 0)
         {
             Libc.Close(master);
+        }
+    }
+
+    /// <summary>
+    /// The output speed the client last set on the slave (termios2 <c>c_ospeed</c>), read through the slave end this
+    /// object holds: the client's port may be exclusive (TIOCEXCL), so a second open could fail.
+    /// </summary>
+    internal uint SlaveOutputSpeed()
+    {
+        Libc.Termios2 t;
+        return Libc.Ioctl(_slave, Libc.TcGets2, &t) == 0 ? t.OSpeed : throw Libc.Error($"TCGETS2 on {SlavePath}");
+    }
+
+    /// <summary>Raw 8-bit mode, no echo, non-blocking reads: until a client configures the slave, nothing may be echoed back to the bus.</summary>
+    private static void MakeRaw(int fd, string path)
+    {
+        Libc.Termios2 t;
+        if (Libc.Ioctl(fd, Libc.TcGets2, &t) != 0)
+        {
+            throw Libc.Error($"TCGETS2 on {path}");
+        }
+
+        t.IFlag = 0;
+        t.OFlag = 0;
+        t.LFlag = 0;
+        t.CFlag = (t.CFlag & ~(CSize | ParEnb)) | Cs8 | CRead | CLocal;
+        t.Cc[VMin] = 0;
+        t.Cc[VTime] = 0;
+        if (Libc.Ioctl(fd, Libc.TcSets2, &t) != 0)
+        {
+            throw Libc.Error($"TCSETS2 on {path}");
         }
     }
 }

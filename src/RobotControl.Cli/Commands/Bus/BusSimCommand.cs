@@ -40,7 +40,7 @@ internal sealed class BusSimCommand : ICliCommand
                 IByteLink port;
                 if (parse.GetValue(device) is { } path)
                 {
-                    port = PosixSerialLink.Open(path, sim.BaudRate);
+                    port = SerialLink.Open(path, sim.BaudRate);
                     output.WriteLine($"serving {definition.Name} on {path}");
                 }
                 else if (parse.GetValue(pty))
