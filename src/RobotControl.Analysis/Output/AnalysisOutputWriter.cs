@@ -16,10 +16,12 @@ public static class AnalysisOutputWriter
         ["manipulability.png", "vx.png", "vy.png", "vz.png", "fx.png", "fy.png", "fz.png"];
 
     /// <summary>Writes every output of <paramref name="report"/> into <paramref name="directory"/> (created if missing); returns the files' paths.</summary>
+    /// <exception cref="InvalidOperationException">The maps' font is not installed (checked before anything is written).</exception>
     public static IReadOnlyList<string> Write(AnalysisReport report, string directory, IProgress<AnalysisProgress>? progress = null)
     {
         ArgumentNullException.ThrowIfNull(report);
         ArgumentException.ThrowIfNullOrEmpty(directory);
+        PlotFont.Ensure();
         var target = Path.GetFullPath(directory);
         var parent = Path.GetDirectoryName(target.TrimEnd(Path.DirectorySeparatorChar)) ?? target;
         Directory.CreateDirectory(parent);
@@ -34,13 +36,14 @@ public static class AnalysisOutputWriter
             };
             var maps = Maps(report).ToArray();
             var images = new byte[maps.Length][];
+            var plane = ToolPlaneGrid.For(report.Sweep);
             var done = 0;
 
-            // Maps are independent: render and encode them on every core.
+            // Maps are independent: render them on every core.
             Parallel.For(0, maps.Length, i =>
             {
                 var (name, content) = maps[i];
-                images[i] = PngEncoder.Encode(MapPlot.Render(report.Robot.Name, Subtitle(report, name), report.Sweep, content));
+                images[i] = MapPlot.RenderPng(report.Robot.Name, Subtitle(report, name), report.Sweep, plane, content);
                 var finished = Interlocked.Increment(ref done);
                 progress?.Report(new AnalysisProgress($"map {name}", 0.9 + (0.1 * finished / maps.Length), null));
             });
@@ -75,7 +78,15 @@ public static class AnalysisOutputWriter
         double[] force = [req.ForceN.X, req.ForceN.Y, req.ForceN.Z];
         double[] velocity = [req.VelocityMmPerS.X, req.VelocityMmPerS.Y, req.VelocityMmPerS.Z];
         string[] axes = ["x", "y", "z"];
-        yield return ("manipulability.png", new MapContent(sweep.Manipulability, "w", "manipulability sqrt(det(J J^T))", "mm³", null));
+        var wMax = sweep.Manipulability.Max();
+        yield return (
+            "manipulability.png",
+            new MapContent(
+                sweep.ManipulabilityNormalised,
+                "manipulability w/w_max",
+                string.Create(CultureInfo.InvariantCulture, $"manipulability w = sqrt(det(J Jᵀ)) divided by its grid maximum w_max = {wMax:G4} mm³"),
+                "unitless",
+                null));
         foreach (var (maps, prefix, label) in new[] { (sweep.Reference, string.Empty, string.Empty), (sweep.CouplingAware, "coupling_aware_", " (coupling-aware)") })
         {
             if (maps is null)

@@ -27,17 +27,12 @@ public sealed class AnalysisOutputWriterTests : IDisposable
         foreach (var name in AnalysisOutputWriter.MapFiles.Concat(["coupling_aware_fx.png"]))
         {
             var bytes = File.ReadAllBytes(Path.Combine(dir, name));
-            var (width, height, pixels) = PngTestDecoder.Decode(bytes);
+            var image = DecodedPng.Decode(bytes);
             Assert.True(bytes.Length > 10_000, $"{name} is only {bytes.Length} bytes");
-            Assert.Equal(960, width);
-            Assert.Equal(780, height);
-            var colours = new HashSet<int>();
-            for (var i = 0; i < pixels.Length; i += 3)
-            {
-                colours.Add((pixels[i] << 16) | (pixels[i + 1] << 8) | pixels[i + 2]);
-            }
-
-            Assert.True(colours.Count > 100, $"{name} has only {colours.Count} colours");
+            Assert.Equal(960, image.Width);
+            Assert.Equal(780, image.Height);
+            var colours = image.DistinctColours();
+            Assert.True(colours > 100, $"{name} has only {colours} colours");
         }
 
         Assert.Empty(Directory.GetDirectories(_root, ".*partial*"));

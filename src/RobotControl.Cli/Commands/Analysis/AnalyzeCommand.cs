@@ -110,8 +110,9 @@ internal sealed class AnalyzeCommand : ICliCommand
             PrintSummary(output, report, files, outDir.FullName, clock.Elapsed);
             return 0;
         }
-        catch (ArgumentException ex)
+        catch (Exception ex) when (ex is ArgumentException or InvalidOperationException)
         {
+            // InvalidOperationException: the maps' font is missing (AnalysisOutputWriter checks before writing).
             error.WriteLine($"error: {ex.Message}");
             error.WriteLine("nothing was written.");
             return 1;
