@@ -3,6 +3,12 @@
 # translation block, exec trace), between bench_mark_begin and bench_mark_end.
 # usage: count-tick.sh <arm build dir>   (after firmware/build-arm.sh)
 set -eu
+# qemu is needed only by this benchmark, so it is installed here rather than by tools/bootstrap.sh.
+if ! command -v qemu-system-arm >/dev/null 2>&1; then
+  echo "count-tick: installing qemu-system-arm"
+  DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends qemu-system-arm >/dev/null
+fi
 B=${1:-build/firmware-arm}
 ELF="$B/rcfw_tickbench.elf"
 BEGIN=$(arm-none-eabi-nm "$ELF" | awk '$3=="bench_mark_begin"{print $1}')
