@@ -1,3 +1,4 @@
+using RobotControl.Bus.Tests.Support;
 using RobotControl.Bus.Transports;
 
 namespace RobotControl.Bus.Tests.Transports;
@@ -45,26 +46,11 @@ public sealed class LinkUriTests
     [Fact]
     public void Usb_adapter_is_resolved_from_sysfs()
     {
-        var root = Directory.CreateTempSubdirectory("usbsys");
-        try
-        {
-            var usbDevice = Directory.CreateDirectory(Path.Combine(root.FullName, "sys", "devices", "usb1", "1-1"));
-            File.WriteAllText(Path.Combine(usbDevice.FullName, "idVendor"), "0403\n");
-            File.WriteAllText(Path.Combine(usbDevice.FullName, "idProduct"), "6001\n");
-            File.WriteAllText(Path.Combine(usbDevice.FullName, "serial"), "A50285BI\n");
-            var iface = Directory.CreateDirectory(Path.Combine(usbDevice.FullName, "1-1:1.0", "ttyUSB3"));
-            var devices = Directory.CreateDirectory(Path.Combine(root.FullName, "sys", "bus", "usb-serial", "devices"));
-            Directory.CreateSymbolicLink(Path.Combine(devices.FullName, "ttyUSB3"), iface.FullName);
-
-            var sys = Path.Combine(root.FullName, "sys");
-            Assert.Equal("/dev/ttyUSB3", UsbSerialResolver.Resolve(0x0403, 0x6001, "A50285BI", sys, "/dev"));
-            Assert.Equal("/dev/ttyUSB3", UsbSerialResolver.Resolve(0x0403, 0x6001, null, sys, "/dev"));
-            var ex = Assert.Throws<IOException>(() => UsbSerialResolver.Resolve(0x0403, 0x6001, "OTHER", sys, "/nonexistent"));
-            Assert.Contains("usb:0403:6001:OTHER", ex.Message, StringComparison.Ordinal);
-        }
-        finally
-        {
-            root.Delete(recursive: true);
-        }
+        using var fake = new FakeUsbSysfs();
+        var sys = fake.SysPath;
+        Assert.Equal("/dev/ttyUSB3", UsbSerialResolver.Resolve(0x0403, 0x6001, "A50285BI", sys, "/dev"));
+        Assert.Equal("/dev/ttyUSB3", UsbSerialResolver.Resolve(0x0403, 0x6001, null, sys, "/dev"));
+        var ex = Assert.Throws<IOException>(() => UsbSerialResolver.Resolve(0x0403, 0x6001, "OTHER", sys, "/nonexistent"));
+        Assert.Contains("usb:0403:6001:OTHER", ex.Message, StringComparison.Ordinal);
     }
 }

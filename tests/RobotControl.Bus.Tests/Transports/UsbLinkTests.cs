@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using RobotControl.Bus.Tests.Support;
 using RobotControl.Bus.Transports;
 using RobotControl.Bus.Transports.Serial;
 
@@ -11,30 +12,16 @@ public sealed class UsbLinkTests
     public void A_usb_transport_found_in_sysfs_opens_as_serial()
     {
         using var pty = PseudoTerminal.Create();
-        var root = Directory.CreateTempSubdirectory("usblink");
-        try
-        {
-            var usbDevice = Directory.CreateDirectory(Path.Combine(root.FullName, "sys", "devices", "usb1", "1-1"));
-            File.WriteAllText(Path.Combine(usbDevice.FullName, "idVendor"), "0403\n");
-            File.WriteAllText(Path.Combine(usbDevice.FullName, "idProduct"), "6001\n");
-            File.WriteAllText(Path.Combine(usbDevice.FullName, "serial"), "A50285BI\n");
-            var iface = Directory.CreateDirectory(Path.Combine(usbDevice.FullName, "1-1:1.0", "ttyUSB3"));
-            var devices = Directory.CreateDirectory(Path.Combine(root.FullName, "sys", "bus", "usb-serial", "devices"));
-            Directory.CreateSymbolicLink(Path.Combine(devices.FullName, "ttyUSB3"), iface.FullName);
-            var dev = Directory.CreateDirectory(Path.Combine(root.FullName, "dev"));
-            File.CreateSymbolicLink(Path.Combine(dev.FullName, "ttyUSB3"), pty.SlavePath);
+        using var fake = new FakeUsbSysfs();
+        var dev = Directory.CreateDirectory(Path.Combine(fake.Root, "dev"));
+        File.CreateSymbolicLink(Path.Combine(dev.FullName, FakeUsbSysfs.TtyName), pty.SlavePath);
 
-            using var link = LinkFactory.Open(LinkUri.Parse("usb:0403:6001:A50285BI?baud=2000000"), Path.Combine(root.FullName, "sys"), dev.FullName);
+        using var link = LinkFactory.Open(LinkUri.Parse("usb:0403:6001:A50285BI?baud=2000000"), fake.SysPath, dev.FullName);
 
-            var serial = Assert.IsType<SerialLink>(link);
-            Assert.Contains(Path.Combine(dev.FullName, "ttyUSB3"), serial.Description, StringComparison.Ordinal);
-            Assert.Equal(2_000_000, link.BaudRate);
-            AssertCarriesBytes(pty, link);
-        }
-        finally
-        {
-            root.Delete(recursive: true);
-        }
+        var serial = Assert.IsType<SerialLink>(link);
+        Assert.Contains(Path.Combine(dev.FullName, FakeUsbSysfs.TtyName), serial.Description, StringComparison.Ordinal);
+        Assert.Equal(2_000_000, link.BaudRate);
+        AssertCarriesBytes(pty, link);
     }
 
     [Fact]
