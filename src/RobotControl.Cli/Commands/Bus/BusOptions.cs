@@ -2,36 +2,54 @@ using System.CommandLine;
 
 namespace RobotControl.Cli.Commands.Bus;
 
-/// <summary>Arguments and options the bus commands share.</summary>
-internal static class BusOptions
+/// <summary>
+/// The transport argument and the options every bus command shares, added to one command; <see cref="Run"/> opens the
+/// session they describe.
+/// </summary>
+internal sealed class BusOptions
 {
-    public static Argument<string> Transport() => new("transport")
+    private readonly Argument<string> _transport = new("transport")
     {
         Description = "serial:/dev/ttyUSB0?baud=1000000 | usb:0403:6001:<serial> | tcp:host:port | virtual:hardware/robots/lb-1.0.json",
     };
 
-    public static Option<FileInfo?> Robot() => new("--robot")
+    private readonly Option<FileInfo?> _robot = new("--robot")
     {
         Description = "Robot data file (needed on a real bus; a virtual: transport names its own)",
     };
 
-    public static Option<double> MarginMs() => new("--margin-ms")
+    private readonly Option<double> _marginMs = new("--margin-ms")
     {
         Description = "Reply timeout beyond the wire time, ms (USB adapters: their latency timer + 1)",
         DefaultValueFactory = _ => 3,
     };
 
-    /// <summary>Runs <paramref name="body"/> with a session, turning expected failures into messages and exit codes.</summary>
-    public static int Run(string transport, FileInfo? robot, double marginMs, TextWriter error, Func<BusSession, int> body)
+    /// <summary>Adds the transport argument, <c>--robot</c> and <c>--margin-ms</c> to <paramref name="command"/>.</summary>
+    public BusOptions(Command command)
     {
+        ArgumentNullException.ThrowIfNull(command);
+        command.Arguments.Add(_transport);
+        command.Options.Add(_robot);
+        command.Options.Add(_marginMs);
+    }
+
+    /// <summary>
+    /// Runs <paramref name="body"/> with a session on the parsed transport, turning expected failures (bad transport,
+    /// I/O, bad robot file, refused operation) into a message on the error stream and exit code 2.
+    /// </summary>
+    public int Run(ParseResult parse, Func<BusSession, int> body)
+    {
+        ArgumentNullException.ThrowIfNull(parse);
+        ArgumentNullException.ThrowIfNull(body);
         try
         {
-            using var session = BusSession.Open(transport, robot?.FullName, TimeSpan.FromMilliseconds(marginMs));
+            var margin = TimeSpan.FromMilliseconds(parse.GetValue(_marginMs));
+            using var session = BusSession.Open(parse.GetValue(_transport)!, parse.GetValue(_robot)?.FullName, margin);
             return body(session);
         }
         catch (Exception ex) when (ex is FormatException or IOException or ArgumentException or KeyNotFoundException or Hardware.Loading.RobotDataException or InvalidOperationException)
         {
-            error.WriteLine(ex.Message);
+            parse.InvocationConfiguration.Error.WriteLine(ex.Message);
             return 2;
         }
     }

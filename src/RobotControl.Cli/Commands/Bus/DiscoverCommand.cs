@@ -11,17 +11,12 @@ internal sealed class DiscoverCommand : ICliCommand
     /// <inheritdoc />
     public Command Build()
     {
-        var transport = BusOptions.Transport();
-        var robot = BusOptions.Robot();
-        var margin = BusOptions.MarginMs();
         var command = new Command("discover", "Find the modules on a bus and compare them with the robot file.");
-        command.Arguments.Add(transport);
-        command.Options.Add(robot);
-        command.Options.Add(margin);
+        var busOptions = new BusOptions(command);
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
-            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            return busOptions.Run(parse, session =>
             {
                 if (session.Robot is null)
                 {

@@ -11,17 +11,12 @@ internal sealed class HomeCommand : ICliCommand
     /// <inheritdoc />
     public Command Build()
     {
-        var transport = BusOptions.Transport();
-        var robot = BusOptions.Robot();
-        var margin = BusOptions.MarginMs();
         var command = new Command("home", "Home every motor from its joint potentiometer.");
-        command.Arguments.Add(transport);
-        command.Options.Add(robot);
-        command.Options.Add(margin);
+        var busOptions = new BusOptions(command);
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
-            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            return busOptions.Run(parse, session =>
             {
                 var bus = session.RequireRobot();
                 var report = bus.Discover();

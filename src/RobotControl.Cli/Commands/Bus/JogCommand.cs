@@ -14,15 +14,12 @@ internal sealed class JogCommand : ICliCommand
     /// <inheritdoc />
     public Command Build()
     {
-        var transport = BusOptions.Transport();
-        var robot = BusOptions.Robot();
-        var margin = BusOptions.MarginMs();
         var motor = new Option<string>("--motor") { Description = "arm.joint, e.g. right.elbow or left.tool_open_close", Required = true };
         var speed = new Option<double>("--speed-deg-s") { Description = "Axis output speed, deg/s (limited to the motor's speed limit)", DefaultValueFactory = _ => 10 };
         var duration = new Option<double>("--duration-s") { Description = "How long to jog, s", DefaultValueFactory = _ => 1 };
         var command = new Command("jog", "Jog one motor at a speed for a time, then stop and report.");
-        command.Arguments.Add(transport);
-        foreach (var o in new Option[] { robot, margin, motor, speed, duration })
+        var busOptions = new BusOptions(command);
+        foreach (var o in new Option[] { motor, speed, duration })
         {
             command.Options.Add(o);
         }
@@ -30,7 +27,7 @@ internal sealed class JogCommand : ICliCommand
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
-            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            return busOptions.Run(parse, session =>
             {
                 var bus = session.RequireRobot();
                 var report = bus.Discover();

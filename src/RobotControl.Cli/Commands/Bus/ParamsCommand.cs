@@ -14,6 +14,7 @@ internal sealed class ParamsCommand : ICliCommand
     public Command Build()
     {
         var command = new Command("params", "Read or write the modules' FRAM parameters.");
+        var busOptions = new BusOptions(command);
         command.Subcommands.Add(BuildGet());
         command.Subcommands.Add(BuildSet());
         return command;
@@ -21,19 +22,14 @@ internal sealed class ParamsCommand : ICliCommand
 
     private static Command BuildGet()
     {
-        var transport = BusOptions.Transport();
-        var robot = BusOptions.Robot();
-        var margin = BusOptions.MarginMs();
         var module = new Option<int?>("--module") { Description = "Only this module ID" };
         var command = new Command("get", "Print every persistent parameter with the robot file's value (* marks a difference).");
-        command.Arguments.Add(transport);
-        command.Options.Add(robot);
-        command.Options.Add(margin);
+        var busOptions = new BusOptions(command);
         command.Options.Add(module);
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
-            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            return busOptions.Run(parse, session =>
             {
                 var bus = session.RequireRobot();
                 bus.Discover();
@@ -60,17 +56,14 @@ internal sealed class ParamsCommand : ICliCommand
 
     private static Command BuildSet()
     {
-        var transport = BusOptions.Transport();
-        var robot = BusOptions.Robot();
-        var margin = BusOptions.MarginMs();
         var module = new Option<int?>("--module") { Description = "Module ID" };
         var field = new Option<string?>("--field") { Description = "Control-table field, e.g. kp, current_limit, speed_limit" };
         var motor = new Option<int>("--motor") { Description = "Motor channel for per-motor fields", DefaultValueFactory = _ => 0 };
         var value = new Option<long?>("--value") { Description = "Value in the field's units (see docs/protocol.md)" };
         var fromFile = new Option<bool>("--from-robot-file") { Description = "Write every parameter the robot file implies into every module" };
         var command = new Command("set", "Write one parameter (--module --field [--motor] --value) or all of them (--from-robot-file) into FRAM.");
-        command.Arguments.Add(transport);
-        foreach (var o in new Option[] { robot, margin, module, field, motor, value, fromFile })
+        var busOptions = new BusOptions(command);
+        foreach (var o in new Option[] { module, field, motor, value, fromFile })
         {
             command.Options.Add(o);
         }
@@ -78,7 +71,7 @@ internal sealed class ParamsCommand : ICliCommand
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
-            return BusOptions.Run(parse.GetValue(transport)!, parse.GetValue(robot), parse.GetValue(margin), parse.InvocationConfiguration.Error, session =>
+            return busOptions.Run(parse, session =>
             {
                 var bus = session.RequireRobot();
                 bus.Discover();
