@@ -39,9 +39,6 @@ internal static unsafe partial class FirmwareHost
     [LibraryImport(Library, EntryPoint = "rcfw_advance_us")]
     public static partial int AdvanceUs(nint bus, uint us);
 
-    [LibraryImport(Library, EntryPoint = "rcfw_now_us")]
-    public static partial ulong NowUs(nint bus);
-
     [LibraryImport(Library, EntryPoint = "rcfw_bus_write")]
     public static partial int BusWrite(nint bus, byte* bytes, int length);
 
@@ -60,29 +57,14 @@ internal static unsafe partial class FirmwareHost
     [LibraryImport(Library, EntryPoint = "rcfw_get_driver_enable")]
     public static partial int GetDriverEnable(nint bus, int module, int motor);
 
-    [LibraryImport(Library, EntryPoint = "rcfw_get_position")]
-    public static partial int GetPosition(nint bus, int module, int motor);
-
     [LibraryImport(Library, EntryPoint = "rcfw_peek_table")]
     public static partial int PeekTable(nint bus, int module, ushort address, byte* buffer, int length);
-
-    [LibraryImport(Library, EntryPoint = "rcfw_is_powered")]
-    public static partial int IsPowered(nint bus, int module);
 
     [LibraryImport(Library, EntryPoint = "rcfw_power_cycle")]
     public static partial int PowerCycle(nint bus, int module);
 
     [LibraryImport(Library, EntryPoint = "rcfw_reset")]
     public static partial int Reset(nint bus, int module, byte cause);
-
-    [LibraryImport(Library, EntryPoint = "rcfw_fram_cut_after")]
-    public static partial int FramCutAfter(nint bus, int module, int bytes);
-
-    [LibraryImport(Library, EntryPoint = "rcfw_fram_peek")]
-    public static partial int FramPeek(nint bus, int module, ushort address, byte* buffer, int length);
-
-    [LibraryImport(Library, EntryPoint = "rcfw_fram_poke")]
-    public static partial int FramPoke(nint bus, int module, ushort address, byte* buffer, int length);
 
     /// <summary>Throws when a status-returning call failed.</summary>
     public static int Check(int status, string what) => status >= 0
