@@ -1,6 +1,7 @@
 using System.Globalization;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Ports;
+using RobotControl.Plugins.Sdk.Sampling;
 
 namespace RobotControl.Plugins.Standard.Recording;
 
@@ -89,18 +90,7 @@ public sealed class PlaybackPlugin : Plugin<PlaybackSettings>
             t = _time[0] + ((t - _time[0]) % DurationSeconds);
         }
 
-        var i = Math.Clamp(_hint, 0, _time.Length - 1);
-        if (_time[i] > t)
-        {
-            i = 0;
-        }
-
-        while (i < _time.Length - 1 && _time[i + 1] <= t)
-        {
-            i++;
-        }
-
-        _hint = i;
+        var i = SampleTimes.IndexAtOrBefore(_time, t, ref _hint);
         var a = _rows[i];
         var interpolate = Settings.Interpolate && i < _time.Length - 1 && t > _time[i];
         var f = interpolate ? (t - _time[i]) / (_time[i + 1] - _time[i]) : 0.0;

@@ -1,4 +1,5 @@
 using System.Globalization;
+using RobotControl.Plugins.Sdk.Sampling;
 
 namespace RobotControl.Plugins.Touch.Simulation;
 
@@ -126,18 +127,7 @@ public sealed class HandScript
     public void Sample(double timeSeconds, Span<double> pose, Span<double> velocity, out bool button1, out bool button2, ref int hint)
     {
         var t = Math.Clamp(timeSeconds, _time[0], _time[^1]);
-        var i = Math.Clamp(hint, 0, _time.Length - 2);
-        if (_time[i] > t)
-        {
-            i = 0;
-        }
-
-        while (i < _time.Length - 2 && _time[i + 1] <= t)
-        {
-            i++;
-        }
-
-        hint = i;
+        var i = Math.Min(SampleTimes.IndexAtOrBefore(_time, t, ref hint), _time.Length - 2); // the segment [i, i + 1]
         var dt = _time[i + 1] - _time[i];
         var f = (t - _time[i]) / dt;
         var a = _values[i];
