@@ -1,5 +1,6 @@
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
+using RobotControl.Kinematics.Forward;
 
 namespace RobotControl.Kinematics.Tests;
 
@@ -23,6 +24,15 @@ internal static class TestRobots
     };
 
     public static string RobotsDirectory { get; } = FindRobotsDirectory();
+
+    /// <summary>Fills <paramref name="q"/> with joint values uniform within the chain's limits (deterministic for a seeded Random).</summary>
+    public static void FillRandomJoints(KinematicChain chain, Random random, Span<double> q)
+    {
+        for (var i = 0; i < q.Length; i++)
+        {
+            q[i] = chain.MinRad[i] + (random.NextDouble() * (chain.MaxRad[i] - chain.MinRad[i]));
+        }
+    }
 
     public static string PathOf(string file) => Path.Combine(RobotsDirectory, file);
 

@@ -1,4 +1,5 @@
 using RobotControl.Kinematics.Coupling;
+using RobotControl.Kinematics.Forward;
 
 namespace RobotControl.Kinematics.Tests.Coupling;
 
@@ -17,13 +18,11 @@ public sealed class JointMotorMapTests
         var motors = new double[n];
         var actuators = new double[n];
         var back = new double[n];
+        var chain = new KinematicChain(robot);
         var random = new Random(3);
         for (var sample = 0; sample < 1000; sample++)
         {
-            for (var j = 0; j < n; j++)
-            {
-                q[j] = robot.Joints[j].MinRad + random.NextDouble() * (robot.Joints[j].MaxRad - robot.Joints[j].MinRad);
-            }
+            TestRobots.FillRandomJoints(chain, random, q);
 
             map.JointsToMotors(q, motors);
             map.MotorsToJoints(motors, back);

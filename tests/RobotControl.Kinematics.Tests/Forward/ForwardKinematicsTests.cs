@@ -111,10 +111,7 @@ public sealed class ForwardKinematicsTests
         const double h = 1e-6;
         for (var sample = 0; sample < 50; sample++)
         {
-            for (var j = 0; j < n; j++)
-            {
-                q[j] = robot.Joints[j].MinRad + random.NextDouble() * (robot.Joints[j].MaxRad - robot.Joints[j].MinRad);
-            }
+            TestRobots.FillRandomJoints(chain, random, q);
 
             state.Update(q);
             state.Jacobian(jacobian);

@@ -21,10 +21,7 @@ public sealed class ManipulabilityTests
         var positionJoints = robot.PositionJoints.ToArray();
         for (var sample = 0; sample < 200; sample++)
         {
-            for (var j = 0; j < n; j++)
-            {
-                q[j] = robot.Joints[j].MinRad + random.NextDouble() * (robot.Joints[j].MaxRad - robot.Joints[j].MinRad);
-            }
+            TestRobots.FillRandomJoints(chain, random, q);
 
             state.Update(q);
             state.Jacobian(jacobian);

@@ -40,11 +40,7 @@ internal static class IkTestData
     public static double[] RandomJoints(KinematicChain chain, Random random)
     {
         var q = new double[chain.JointCount];
-        for (var i = 0; i < q.Length; i++)
-        {
-            q[i] = chain.MinRad[i] + (random.NextDouble() * (chain.MaxRad[i] - chain.MinRad[i]));
-        }
-
+        TestRobots.FillRandomJoints(chain, random, q);
         return q;
     }
 
