@@ -16,6 +16,7 @@ internal static class Program
             root.Subcommands.Add(((ICliCommand)Activator.CreateInstance(type)!).Build());
         }
 
+        root.Options.OfType<VersionOption>().Single().Action = new ProductVersionAction();
         return root.Parse(args).Invoke();
     }
 }

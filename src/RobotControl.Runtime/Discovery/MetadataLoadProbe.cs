@@ -15,15 +15,25 @@ internal sealed class MetadataLoadProbe : IDisposable
         _reader = new PEReader(_stream);
     }
 
-    public bool References(string assemblyName)
+    /// <summary>The version of the referenced assembly named <paramref name="assemblyName"/>, or null when not referenced.</summary>
+    public Version? ReferencedVersion(string assemblyName)
     {
         if (!_reader.HasMetadata)
         {
-            return false;
+            return null;
         }
 
         var metadata = _reader.GetMetadataReader();
-        return metadata.AssemblyReferences.Any(h => metadata.GetString(metadata.GetAssemblyReference(h).Name) == assemblyName);
+        foreach (var handle in metadata.AssemblyReferences)
+        {
+            var reference = metadata.GetAssemblyReference(handle);
+            if (metadata.GetString(reference.Name) == assemblyName)
+            {
+                return reference.Version;
+            }
+        }
+
+        return null;
     }
 
     public void Dispose()

@@ -77,7 +77,8 @@ public sealed class PluginCatalog
 
     /// <summary>
     /// Loads every <c>*.dll</c> directly in <paramref name="folder"/> and in its immediate subfolders (one plug-in per
-    /// subfolder, with its dependencies) that references the plug-in SDK, each into its own load context.
+    /// subfolder, with its dependencies) that references the plug-in SDK, each into its own load context. An assembly
+    /// built against another major version of the SDK is not loaded (one problem line naming it and both versions).
     /// </summary>
     public void AddFolder(string folder)
     {
@@ -88,7 +89,6 @@ public sealed class PluginCatalog
             return;
         }
 
-        var sdkName = typeof(Plugins.Sdk.Plugin).Assembly.GetName().Name;
         var candidates = Directory.EnumerateFiles(folder, "*.dll")
             .Concat(Directory.EnumerateDirectories(folder).SelectMany(d => Directory.EnumerateFiles(d, Path.GetFileName(d) + ".dll")))
             .Order(StringComparer.Ordinal);
@@ -97,9 +97,20 @@ public sealed class PluginCatalog
             try
             {
                 // Peek at the references without loading into the host: only SDK users become plug-ins.
-                using var peek = new MetadataLoadProbe(path);
-                if (!peek.References(sdkName!) || IsHostAssembly(path))
+                Version? builtAgainst;
+                using (var peek = new MetadataLoadProbe(path))
                 {
+                    builtAgainst = peek.ReferencedVersion(SdkCompatibility.SdkAssemblyName);
+                }
+
+                if (builtAgainst is null || IsHostAssembly(path))
+                {
+                    continue;
+                }
+
+                if (SdkCompatibility.Problem($"{Path.GetFileNameWithoutExtension(path)} ({path})", builtAgainst, Plugins.Sdk.SdkVersion.Current) is { } incompatible)
+                {
+                    _problems.Add(incompatible);
                     continue;
                 }
 
@@ -116,6 +127,6 @@ public sealed class PluginCatalog
     private static bool IsHostAssembly(string path)
     {
         var name = AssemblyName.GetAssemblyName(path).Name;
-        return name == typeof(Plugins.Sdk.Plugin).Assembly.GetName().Name;
+        return name == SdkCompatibility.SdkAssemblyName;
     }
 }

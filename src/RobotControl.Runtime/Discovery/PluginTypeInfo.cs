@@ -35,6 +35,12 @@ public sealed class PluginTypeInfo
     /// <summary>Where the type was loaded from.</summary>
     public string AssemblyLocation => Type.Assembly.Location;
 
+    /// <summary>The plug-in assembly's name and version.</summary>
+    public AssemblyName AssemblyName => Type.Assembly.GetName();
+
+    /// <summary>The SDK version the plug-in's assembly was built against.</summary>
+    public Version SdkVersion => SdkCompatibility.BuiltAgainst(Type.Assembly);
+
     /// <summary>Creates an instance (settings are validated by the plug-in's base constructor).</summary>
     /// <exception cref="SettingsException">The settings are invalid.</exception>
     public Plugin Create(PluginSettings? settings, PluginContext context)
