@@ -29,7 +29,7 @@ internal static class CliOption
             DefaultValueFactory = _ => defaultValue,
             CustomParser = result => ParseNumber(result, name, min, max),
         };
-        s_ranges.Add(option, new OptionRange(Format(min), Format(max), typeof(T) == typeof(double)));
+        s_ranges.Add(option, new OptionRange(double.CreateChecked(min), double.CreateChecked(max), typeof(T) == typeof(double)));
         return option;
     }
 
@@ -42,7 +42,7 @@ internal static class CliOption
             Description = $"{description} [{Format(min)} to {Format(max)}]",
             CustomParser = result => ParseNumber(result, name, min, max),
         };
-        s_ranges.Add(option, new OptionRange(Format(min), Format(max), typeof(T) == typeof(double)));
+        s_ranges.Add(option, new OptionRange(double.CreateChecked(min), double.CreateChecked(max), typeof(T) == typeof(double)));
         return option;
     }
 
@@ -78,7 +78,7 @@ internal static class CliOption
                 return value;
             },
         };
-        s_ranges.Add(option, new OptionRange(Format(min), Format(max), true));
+        s_ranges.Add(option, new OptionRange(min.TotalSeconds, max.TotalSeconds, true));
         return option;
     }
 
@@ -140,8 +140,8 @@ internal static class CliOption
         : string.Create(CultureInfo.InvariantCulture, $"{value.TotalMilliseconds:0.###}ms");
 }
 
-/// <summary>The accepted range of a numeric option, as text (as the user would write the bounds).</summary>
+/// <summary>The accepted range of a numeric option (durations in seconds).</summary>
 /// <param name="Min">Smallest accepted value.</param>
 /// <param name="Max">Largest accepted value.</param>
 /// <param name="Fractional">True when fractions are accepted (a double or a duration).</param>
-internal sealed record OptionRange(string Min, string Max, bool Fractional);
+internal sealed record OptionRange(double Min, double Max, bool Fractional);
