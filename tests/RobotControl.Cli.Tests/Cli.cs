@@ -1,3 +1,5 @@
+using System.Text.Json.Nodes;
+
 namespace RobotControl.Cli.Tests;
 
 /// <summary>Runs <c>robotctl</c> in-process through its real entry path and finds the repository's files.</summary>
@@ -25,6 +27,18 @@ internal static class Cli
         }
 
         throw new InvalidOperationException($"{relative} not found above {AppContext.BaseDirectory}");
+    }
+
+    /// <summary>Writes a changed copy of LB-1.0's robot file into <paramref name="directory"/> (catalogue paths kept); returns its path.</summary>
+    public static string CopyRobot(string directory, Action<JsonObject> change)
+    {
+        var source = RepoFile("hardware/robots/lb-1.0.json");
+        var text = File.ReadAllText(source).Replace("../components/", Path.GetDirectoryName(source) + "/../components/", StringComparison.Ordinal);
+        var json = JsonNode.Parse(text)!.AsObject();
+        change(json);
+        var path = Path.Combine(directory, "robot.json");
+        File.WriteAllText(path, json.ToJsonString());
+        return path;
     }
 
     /// <summary>Asserts a refusal: non-zero exit, one line on the error stream containing <paramref name="expected"/>, no stack trace.</summary>

@@ -36,15 +36,9 @@ public sealed class JogCommandHardeningTests : IDisposable
 
     public void Dispose() => Directory.Delete(_root, recursive: true);
 
-    private string RobotWithout(int moduleId)
+    private string RobotWithout(int moduleId) => Cli.CopyRobot(_root, json =>
     {
-        var source = Cli.RepoFile("hardware/robots/lb-1.0.json");
-        var text = File.ReadAllText(source).Replace("../components/", Path.GetDirectoryName(source) + "/../components/", StringComparison.Ordinal);
-        var json = JsonNode.Parse(text)!.AsObject();
         var layout = json["modules"]!["layout"]!.AsArray();
         layout.Remove(layout.First(m => m!["id"]!.GetValue<int>() == moduleId));
-        var path = Path.Combine(_root, "robot.json");
-        File.WriteAllText(path, json.ToJsonString());
-        return path;
-    }
+    });
 }

@@ -60,7 +60,7 @@ public sealed class RunCommandHardeningTests : IDisposable
     [Fact]
     public void A_graph_whose_robot_file_has_no_modules_section_fails_clearly()
     {
-        var robot = CopyRobot(r => r.Remove("modules"));
+        var robot = Cli.CopyRobot(_root, r => r.Remove("modules"));
         var graph = CopyGraph(robot, "virtual");
 
         Cli.AssertRefused(Cli.Run("run", graph, "--virtual", "--duration", "10ms"), "has no modules section");
@@ -77,7 +77,7 @@ public sealed class RunCommandHardeningTests : IDisposable
     [Fact]
     public void An_implausible_length_in_the_robot_file_is_refused_by_the_loader_and_fk_prints_nothing()
     {
-        var robot = CopyRobot(r => r["dh"]!.AsArray()[1]!["d_mm"] = 1e300);
+        var robot = Cli.CopyRobot(_root, r => r["dh"]!.AsArray()[1]!["d_mm"] = 1e300);
 
         var result = Cli.Run("fk", robot);
 
@@ -87,17 +87,6 @@ public sealed class RunCommandHardeningTests : IDisposable
     }
 
     public void Dispose() => Directory.Delete(_root, recursive: true);
-
-    private string CopyRobot(Action<JsonObject> change)
-    {
-        var source = Cli.RepoFile("hardware/robots/lb-1.0.json");
-        var text = File.ReadAllText(source).Replace("../components/", Path.GetDirectoryName(source) + "/../components/", StringComparison.Ordinal);
-        var json = JsonNode.Parse(text)!.AsObject();
-        change(json);
-        var path = Path.Combine(_root, "robot.json");
-        File.WriteAllText(path, json.ToJsonString());
-        return path;
-    }
 
     private string CopyGraph(string robot, string transport)
     {
