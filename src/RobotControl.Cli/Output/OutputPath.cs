@@ -21,7 +21,7 @@ internal static class OutputPath
 
         if (IsSpecial(path))
         {
-            return $"{path} is not a regular file (a device, pipe or link); give a file in a directory";
+            return $"{path} is not a regular file (a device, pipe or socket); give a file in a directory";
         }
 
         var directory = Path.GetDirectoryName(path);
