@@ -76,7 +76,8 @@ internal sealed class ParamsCommand : ICliCommand
         var module = ModuleOption("Module ID");
         var field = new Option<string?>("--field") { Description = "Control-table field, e.g. kp, current_limit, speed_limit" };
         var motor = CliOption.Number("--motor", "Motor channel for per-motor fields", 0, table.MaxMotors - 1, 0);
-        var value = CliOption.OptionalNumber("--value", "Value in the field's units (see docs/protocol.md); checked against the field's range", long.MinValue, long.MaxValue);
+        var writable = table.Fields.Where(f => f.Writable).ToArray();
+        var value = CliOption.OptionalNumber("--value", "Value in the field's units (see docs/protocol.md); checked against the field's own range", writable.Min(f => (long)f.Min), writable.Max(f => (long)f.Max));
         var fromFile = new Option<bool>("--from-robot-file") { Description = "Write every parameter the robot file implies into every module" };
         var yes = new Option<bool>("--yes") { Description = "Confirm a write of baud_rate or id (the module then answers only at the new rate or ID)" };
         var command = new Command("set", "Write one parameter (--module --field [--motor] --value) or all of them (--from-robot-file) into FRAM.");
