@@ -94,7 +94,7 @@ public static class RobotLoader
 
         var name = r.String("name");
         var description = r.StringOrNull("description") ?? string.Empty;
-        var crossSectionArea = r.Number("shoulder_cross_section_cm2", min: 0);
+        var crossSectionArea = r.Number("shoulder_cross_section_cm2", min: 0, max: Plausible.AreaCm2);
 
         // Component catalogues: problems in them are reported against their own files.
         var motors = new List<MotorDefinition>();
@@ -203,8 +203,8 @@ public static class RobotLoader
             }
 
             var alpha = row.Number("alpha_deg", -360, 360);
-            var a = row.Number("a_mm");
-            var d = row.Number("d_mm");
+            var a = row.Number("a_mm", -Plausible.LengthMm, Plausible.LengthMm);
+            var d = row.Number("d_mm", -Plausible.LengthMm, Plausible.LengthMm);
             var offset = row.Number("theta_offset_deg", -360, 360);
             var jointRaw = row.Raw("joint", required: true);
             var index = -1;
@@ -324,7 +324,7 @@ public static class RobotLoader
                         continue;
                     }
 
-                    coupling[ji] = c.ReadNumber(value, c.FieldPath(jn));
+                    coupling[ji] = c.ReadNumber(value, c.FieldPath(jn), -Plausible.Coupling, Plausible.Coupling);
                 }
 
                 if (coupling.All(x => x == 0))
@@ -341,7 +341,7 @@ public static class RobotLoader
                 var outTeeth = d.Integer("stage_output_teeth", 1, 100000);
                 var inTeeth = d.Integer("stage_input_teeth", 1, 100000);
                 var series = d.String("gearhead_series");
-                var ratio = d.Number("gearhead_ratio", min: 1);
+                var ratio = d.Number("gearhead_ratio", min: 1, max: Plausible.Ratio);
                 var eff = d.Number("gearhead_efficiency_pct", 0, 100);
                 var motor = d.String("motor");
                 var note = d.StringOrNull("note");
@@ -452,17 +452,17 @@ public static class RobotLoader
 
         jaw?.RejectUnknownFields();
         var ls = t.Object("lead_screw");
-        var dm = ls?.Number("mean_diameter_mm", min: 0) ?? double.NaN;
-        var lead = ls?.Number("lead_mm", min: 0) ?? double.NaN;
+        var dm = ls?.Number("mean_diameter_mm", min: 0, max: Plausible.LengthMm) ?? double.NaN;
+        var lead = ls?.Number("lead_mm", min: 0, max: Plausible.LengthMm) ?? double.NaN;
         var angle = ls?.Number("thread_angle_deg", 0, 180) ?? double.NaN;
         var f = ls?.Number("friction_coefficient", 0, 10) ?? double.NaN;
         ls?.RejectUnknownFields();
         var link = t.Object("jaw_linkage");
         var offset = link?.Number("theta_a_offset_deg", -360, 360) ?? double.NaN;
-        var l1 = link?.NumberOrNull("l1_mm", min: 0);
-        var l2 = link?.NumberOrNull("l2_mm", min: 0);
-        var l3 = link?.NumberOrNull("l3_mm", min: 0);
-        var doff = link?.NumberOrNull("d_offset_mm");
+        var l1 = link?.NumberOrNull("l1_mm", min: 0, max: Plausible.LengthMm);
+        var l2 = link?.NumberOrNull("l2_mm", min: 0, max: Plausible.LengthMm);
+        var l3 = link?.NumberOrNull("l3_mm", min: 0, max: Plausible.LengthMm);
+        var doff = link?.NumberOrNull("d_offset_mm", -Plausible.LengthMm, Plausible.LengthMm);
         link?.StringOrNull("note");
         link?.RejectUnknownFields();
         t.RejectUnknownFields();
@@ -503,7 +503,7 @@ public static class RobotLoader
         var v = new double[3];
         for (var i = 0; i < 3; i++)
         {
-            v[i] = r.ReadNumber(items[i], $"{r.FieldPath(name)}[{i}]");
+            v[i] = r.ReadNumber(items[i], $"{r.FieldPath(name)}[{i}]", -Plausible.LengthMm, Plausible.LengthMm);
         }
 
         return new Vector3Data(v[0], v[1], v[2]);
@@ -581,14 +581,14 @@ public static class RobotLoader
                 return default;
             }
 
-            var v = new Vector3Data(o.Number("x", min: 0), o.Number("y", min: 0), o.Number("z", min: 0));
+            var v = new Vector3Data(o.Number("x", 0, Plausible.Requirement), o.Number("y", 0, Plausible.Requirement), o.Number("z", 0, Plausible.Requirement));
             o.RejectUnknownFields();
             return v;
         }
 
         var force = Xyz("force_N");
         var velocity = Xyz("velocity_mm_s");
-        var roll = q.Number("grasper_roll_rad_s", min: 0);
+        var roll = q.Number("grasper_roll_rad_s", 0, Plausible.Requirement);
         q.StringOrNull("source");
         q.RejectUnknownFields();
         _ = sink;
@@ -612,29 +612,29 @@ public static class RobotLoader
                 var motor = new MotorDefinition(
                     m.String("model"),
                     m.Integer("pole_pairs", 1, 64),
-                    m.Number("nominal_voltage_V", min: 0),
-                    m.Number("terminal_resistance_ohm", min: 0),
-                    m.Number("no_load_speed_rpm", min: 0),
-                    m.Number("no_load_current_A", min: 0),
-                    m.Number("stall_torque_mNm", min: 0),
-                    m.Number("static_friction_torque_mNm", min: 0),
-                    m.Number("dynamic_friction_mNm_per_rpm", min: 0),
-                    m.Number("speed_constant_rpm_per_V", min: 0),
-                    m.Number("back_emf_constant_mV_per_rpm", min: 0),
-                    m.Number("torque_constant_mNm_per_A", min: 0),
-                    m.Number("terminal_inductance_uH", min: 0),
-                    m.Number("mechanical_time_constant_ms", min: 0),
-                    m.Number("rotor_inertia_g_cm2", min: 0),
-                    m.Number("rated_torque_mNm", min: 0),
-                    m.Number("rated_current_A", min: 0),
-                    m.Number("rated_speed_rpm", min: 0),
-                    m.Number("max_speed_rpm", min: 0),
-                    m.Number("mass_g", min: 0),
-                    m.Number("max_winding_temperature_C"),
-                    m.Number("thermal_resistance_winding_housing_K_per_W", min: 0),
-                    m.Number("thermal_resistance_housing_ambient_K_per_W", min: 0),
-                    m.Number("thermal_time_constant_winding_s", min: 0),
-                    m.Number("thermal_time_constant_housing_s", min: 0));
+                    m.Number("nominal_voltage_V", 0, Plausible.CatalogueValue),
+                    m.Number("terminal_resistance_ohm", 0, Plausible.CatalogueValue),
+                    m.Number("no_load_speed_rpm", 0, Plausible.CatalogueValue),
+                    m.Number("no_load_current_A", 0, Plausible.CatalogueValue),
+                    m.Number("stall_torque_mNm", 0, Plausible.CatalogueValue),
+                    m.Number("static_friction_torque_mNm", 0, Plausible.CatalogueValue),
+                    m.Number("dynamic_friction_mNm_per_rpm", 0, Plausible.CatalogueValue),
+                    m.Number("speed_constant_rpm_per_V", 0, Plausible.CatalogueValue),
+                    m.Number("back_emf_constant_mV_per_rpm", 0, Plausible.CatalogueValue),
+                    m.Number("torque_constant_mNm_per_A", 0, Plausible.CatalogueValue),
+                    m.Number("terminal_inductance_uH", 0, Plausible.CatalogueValue),
+                    m.Number("mechanical_time_constant_ms", 0, Plausible.CatalogueValue),
+                    m.Number("rotor_inertia_g_cm2", 0, Plausible.CatalogueValue),
+                    m.Number("rated_torque_mNm", 0, Plausible.CatalogueValue),
+                    m.Number("rated_current_A", 0, Plausible.CatalogueValue),
+                    m.Number("rated_speed_rpm", 0, Plausible.CatalogueValue),
+                    m.Number("max_speed_rpm", 0, Plausible.CatalogueValue),
+                    m.Number("mass_g", 0, Plausible.MassG),
+                    m.Number("max_winding_temperature_C", Plausible.MinTemperatureC, Plausible.MaxTemperatureC),
+                    m.Number("thermal_resistance_winding_housing_K_per_W", 0, Plausible.CatalogueValue),
+                    m.Number("thermal_resistance_housing_ambient_K_per_W", 0, Plausible.CatalogueValue),
+                    m.Number("thermal_time_constant_winding_s", 0, Plausible.CatalogueValue),
+                    m.Number("thermal_time_constant_housing_s", 0, Plausible.CatalogueValue));
                 m.Number("max_efficiency_pct", 0, 100);
                 m.RejectUnknownFields();
                 motors.Add(motor);
@@ -651,17 +651,17 @@ public static class RobotLoader
                 for (var s = 0; s < stageItems.Count; s++)
                 {
                     var st = new JsonFieldReader(sink, stageItems[s], $"{g.Path}.stages[{s}]");
-                    stages.Add(new GearheadStage(st.Number("ratio", min: 1), st.Number("efficiency_pct", 0, 100) / 100.0));
+                    stages.Add(new GearheadStage(st.Number("ratio", min: 1, max: Plausible.Ratio), st.Number("efficiency_pct", 0, 100) / 100.0));
                     st.RejectUnknownFields();
                 }
 
                 gearheads.Add(new GearheadDefinition(
                     g.String("series"),
                     g.String("for_motor"),
-                    g.Number("continuous_output_torque_mNm", min: 0),
-                    g.Number("intermittent_output_torque_mNm", min: 0),
-                    g.Number("max_input_speed_rpm", min: 0),
-                    g.Number("backlash_deg", min: 0),
+                    g.Number("continuous_output_torque_mNm", 0, Plausible.CatalogueValue),
+                    g.Number("intermittent_output_torque_mNm", 0, Plausible.CatalogueValue),
+                    g.Number("max_input_speed_rpm", 0, Plausible.CatalogueValue),
+                    g.Number("backlash_deg", 0, Plausible.CatalogueValue),
                     stages));
                 g.RejectUnknownFields();
             }

@@ -908,8 +908,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
         {
             Span<byte> status = stackalloc byte[2];
             var known = _client.Read(c.Id, _statusAddress, status).Succeeded;
-            throw new IOException($"module {c.Id} \"{c.Name}\": torque {(on ? "on" : "off")} refused (torque {t.Outcome} 0x{t.Error:X2}, watchdog {w.Outcome} 0x{w.Error:X2}" +
-                (known ? $", hardware errors {(HardwareErrors)status[0]}, reset cause {status[1]}" : string.Empty) + "); a latched watchdog error must be cleared first");
+            throw new IOException(TorqueRefusal.Describe(c.Id, c.Name, on, t, w, known ? ((HardwareErrors)status[0], status[1]) : null));
         }
     }
 

@@ -82,7 +82,8 @@ public static class RunDuration
             : t.EndsWith('s') ? (t[..^1], 1.0)
             : t.EndsWith('m') ? (t[..^1], 60.0)
             : (t, 1.0);
-        if (!double.TryParse(number, NumberStyles.Float, CultureInfo.InvariantCulture, out var value) || !double.IsFinite(value) || value < 0)
+        if (!double.TryParse(number, NumberStyles.Float, CultureInfo.InvariantCulture, out var value) || !double.IsFinite(value) || value < 0
+            || value * scale >= TimeSpan.MaxValue.TotalSeconds)
         {
             throw new FormatException($"'{text}' is not a duration (e.g. 20s, 500ms, 2m)");
         }

@@ -36,6 +36,16 @@ internal static unsafe partial class Libc
     [LibraryImport("libc", EntryPoint = "ioctl", SetLastError = true)]
     public static partial int Ioctl(int fd, nuint request, nint argument);
 
+    public const uint TiocExcl = 0x540C;
+    public const uint TiocNxcl = 0x540D;
+    public const int LockExclusive = 2;
+    public const int LockNonBlocking = 4;
+    public const int LockUnlock = 8;
+    public const int EWouldBlock = EAgain;
+
+    [LibraryImport("libc", EntryPoint = "flock", SetLastError = true)]
+    public static partial int Flock(int fd, int operation);
+
     [LibraryImport("libc", EntryPoint = "posix_openpt", SetLastError = true)]
     public static partial int PosixOpenpt(int flags);
 
@@ -90,6 +100,20 @@ internal static unsafe partial class Libc
         }
     }
 
+    /// <summary>statx(2) of <paramref name="path"/> (links followed): 0, or -1 with errno set.</summary>
+    public static int Statx(string path, out int mode, out uint deviceMajor, out uint deviceMinor, out ulong inode)
+    {
+        // struct statx is the same on every architecture: 256 bytes; stx_mode at 28, stx_ino at 32, stx_dev_major/minor at 136/140.
+        var buffer = stackalloc byte[256];
+        const int AtFdCwd = -100, StatxBasicStats = 0x7FF;
+        var r = StatxCore(AtFdCwd, path, 0, StatxBasicStats, buffer);
+        mode = r == 0 ? *(ushort*)(buffer + 28) : 0;
+        inode = r == 0 ? *(ulong*)(buffer + 32) : 0;
+        deviceMajor = r == 0 ? *(uint*)(buffer + 136) : 0;
+        deviceMinor = r == 0 ? *(uint*)(buffer + 140) : 0;
+        return r;
+    }
+
     public static IOException Error(string what) =>
         new($"{what} failed: {Marshal.GetPInvokeErrorMessage(Marshal.GetLastPInvokeError())} (errno {Marshal.GetLastPInvokeError()})");
 
@@ -98,6 +122,9 @@ internal static unsafe partial class Libc
 
     [LibraryImport("libc", EntryPoint = "write", SetLastError = true)]
     private static partial nint WriteCore(int fd, byte* buffer, nint count);
+
+    [LibraryImport("libc", EntryPoint = "statx", SetLastError = true, StringMarshalling = StringMarshalling.Utf8)]
+    private static partial int StatxCore(int dirFd, string path, int flags, uint mask, byte* buffer);
 
     [LibraryImport("libc", EntryPoint = "ppoll", SetLastError = true)]
     private static partial int PPoll(PollFd* fds, nuint count, TimeSpec* timeout, void* sigmask);

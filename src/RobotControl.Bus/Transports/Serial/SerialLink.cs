@@ -19,11 +19,13 @@ public sealed class SerialLink : IByteLink
     private readonly SafeHandle _handle;
     private readonly int _fd;
     private readonly Rs485DriverEnable _driverEnable;
+    private readonly DeviceLock? _lock;
     private bool _disposed;
 
-    private SerialLink(SerialPort port, SafeHandle handle, string description, int baud, Rs485DriverEnable driverEnable)
+    private SerialLink(SerialPort port, SafeHandle handle, string description, int baud, Rs485DriverEnable driverEnable, DeviceLock? deviceLock)
     {
         _port = port;
+        _lock = deviceLock;
         _handle = handle;
         _fd = (int)handle.DangerousGetHandle();
         _driverEnable = driverEnable;
@@ -38,7 +40,10 @@ public sealed class SerialLink : IByteLink
     public int BaudRate { get; }
 
     /// <summary>Opens <paramref name="path"/> at <paramref name="baud"/>, 8 data bits, <paramref name="parity"/>, 1 stop bit.</summary>
-    /// <exception cref="IOException">The device is missing, busy, refuses the settings, or lacks the RTS line <paramref name="driverEnable"/> needs.</exception>
+    /// <exception cref="IOException">
+    /// The device is missing, owned by another process (see <see cref="DeviceLock"/>; the message names its PID), refuses
+    /// the settings, or lacks the RTS line <paramref name="driverEnable"/> needs.
+    /// </exception>
     /// <exception cref="PlatformNotSupportedException">Not a Unix system.</exception>
     public static SerialLink Open(string path, int baud, SerialParity parity = SerialParity.None, Rs485DriverEnable driverEnable = Rs485DriverEnable.Auto)
     {
@@ -51,6 +56,8 @@ public sealed class SerialLink : IByteLink
 
         var frame = $"{baud} baud, 8{parity.ToString()[0]}1";
         var description = $"serial {path} ({frame}" + (driverEnable == Rs485DriverEnable.Rts ? ", RTS driver-enable)" : ")");
+        // The lock comes first: a second process must not reconfigure the owner's port.
+        var deviceLock = DeviceLock.Acquire(path);
         var port = new SerialPort(path, baud, ToPorts(parity), 8, StopBits.One) { Handshake = Handshake.None, DtrEnable = false, RtsEnable = false };
         try
         {
@@ -59,21 +66,24 @@ public sealed class SerialLink : IByteLink
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or ArgumentException or InvalidOperationException)
         {
             port.Dispose();
+            deviceLock?.Dispose();
             throw OpenError(path, frame, ex);
         }
 
         try
         {
+            deviceLock?.MakeExclusive();
             if (driverEnable == Rs485DriverEnable.Rts)
             {
                 SetRts(port, path, false); // probes the line, and the bus starts out listening
             }
 
-            return new SerialLink(port, SerialPortDescriptor.Acquire(port), description, baud, driverEnable);
+            return new SerialLink(port, SerialPortDescriptor.Acquire(port), description, baud, driverEnable, deviceLock);
         }
         catch
         {
             port.Dispose();
+            deviceLock?.Dispose();
             throw;
         }
     }
@@ -154,6 +164,7 @@ public sealed class SerialLink : IByteLink
         _disposed = true;
         _handle.DangerousRelease();
         _port.Dispose();
+        _lock?.Dispose();
     }
 
     private void WriteAll(ReadOnlySpan<byte> data)

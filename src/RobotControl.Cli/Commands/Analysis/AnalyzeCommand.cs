@@ -5,6 +5,7 @@ using RobotControl.Analysis;
 using RobotControl.Analysis.Output;
 using RobotControl.Analysis.Sweep;
 using RobotControl.Analysis.Workspace;
+using RobotControl.Cli.Options;
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using Spectre.Console;
@@ -23,11 +24,7 @@ internal sealed class AnalyzeCommand : ICliCommand
         {
             Description = "Robot file, e.g. hardware/robots/lb-1.0.json",
         };
-        var outOption = new Option<DirectoryInfo>("--out", "-o")
-        {
-            Description = "Output directory (created if missing): summary.json, sweep.csv and the PNG maps",
-            Required = true,
-        };
+        var outOption = CliOption.OutputDirectory("--out", "-o", "Output directory (created if missing): summary.json, sweep.csv and the PNG maps");
         var sweepOption = new Option<string?>("--sweep")
         {
             Description = "Grid to sweep instead of the robot file's reference cross-section, in degrees: " +
@@ -38,11 +35,7 @@ internal sealed class AnalyzeCommand : ICliCommand
         {
             Description = "Also evaluate velocity and force with the limits applied to the motors behind the shoulder couplings (reported separately)",
         };
-        var voxelOption = new Option<double>("--voxel-mm")
-        {
-            Description = "Workspace cell size h in mm (volumes are extrapolated from h and 2h)",
-            DefaultValueFactory = _ => WorkspaceCalculator.DefaultVoxelMm,
-        };
+        var voxelOption = CliOption.Number("--voxel-mm", "Workspace cell size h in mm (volumes are extrapolated from h and 2h)", 0.01, 1000.0, WorkspaceCalculator.DefaultVoxelMm);
         var noWorkspaceOption = new Option<bool>("--no-workspace")
         {
             Description = "Skip the workspace volumes",
@@ -71,11 +64,6 @@ internal sealed class AnalyzeCommand : ICliCommand
         try
         {
             robot = RobotLoader.Load(robotFile.FullName);
-            if (!(voxelMm > 0) || !double.IsFinite(voxelMm))
-            {
-                throw new FormatException($"--voxel-mm must be a positive number of millimetres, not {voxelMm.ToString(CultureInfo.InvariantCulture)}");
-            }
-
             options = new AnalysisOptions
             {
                 Sweep = sweep is null ? null : SweepSpecificationParser.Parse(sweep, robot),
@@ -83,6 +71,10 @@ internal sealed class AnalyzeCommand : ICliCommand
                 Workspace = workspace,
                 WorkspaceVoxelMm = voxelMm,
             };
+            if (AnalysisBudget.Check(robot, options.Sweep ?? SweepSpecification.FromCrossSection(robot.CrossSection), workspace, voxelMm) is { } tooLarge)
+            {
+                throw new FormatException(tooLarge);
+            }
         }
         catch (Exception ex) when (ex is RobotDataException or FormatException)
         {

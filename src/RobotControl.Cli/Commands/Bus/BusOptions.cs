@@ -1,4 +1,5 @@
 using System.CommandLine;
+using RobotControl.Cli.Options;
 
 namespace RobotControl.Cli.Commands.Bus;
 
@@ -18,11 +19,7 @@ internal sealed class BusOptions
         Description = "Robot data file (needed on a real bus; a virtual: transport names its own)",
     };
 
-    private readonly Option<double> _marginMs = new("--margin-ms")
-    {
-        Description = "Reply timeout beyond the wire time, ms (USB adapters: their latency timer + 1)",
-        DefaultValueFactory = _ => 3,
-    };
+    private readonly Option<double> _marginMs = CliOption.Number("--margin-ms", "Reply timeout beyond the wire time, ms (USB adapters: their latency timer + 1)", 0.0, 1000.0, 3.0);
 
     /// <summary>Adds the transport argument, <c>--robot</c> and <c>--margin-ms</c> to <paramref name="command"/>.</summary>
     public BusOptions(Command command)
@@ -31,6 +28,19 @@ internal sealed class BusOptions
         command.Arguments.Add(_transport);
         command.Options.Add(_robot);
         command.Options.Add(_marginMs);
+        _transport.Validators.Add(result =>
+        {
+            // Checked while parsing: a malformed transport is refused before any device is opened.
+            var text = result.Tokens.Count > 0 ? result.Tokens[0].Value : string.Empty;
+            try
+            {
+                BusSession.CheckTransport(text);
+            }
+            catch (FormatException ex)
+            {
+                result.AddError(ex.Message);
+            }
+        });
     }
 
     /// <summary>

@@ -37,19 +37,48 @@ internal sealed class BusSession : IDisposable
     /// <exception cref="RobotDataException">The robot file is invalid.</exception>
     public static BusSession Open(string transport, string? robotFile, TimeSpan responseMargin)
     {
-        var uri = LinkUri.Parse(transport);
+        var uri = CheckTransport(transport);
         var options = new BusClientOptions { ResponseMargin = responseMargin };
         if (uri.Kind == LinkKind.Virtual)
         {
             var robot = RobotLoader.Load(robotFile ?? uri.Target);
             var clock = new ManualTimeProvider();
-            var seed = uri.Options.TryGetValue("seed", out var s) ? int.Parse(s, System.Globalization.CultureInfo.InvariantCulture) : 1;
+            var seed = VirtualSeed(uri);
             var sim = new VirtualRobot(robot, clock, new VirtualRobotOptions { BaudRate = uri.Options.ContainsKey("baud") ? uri.BaudRate : null, Seed = seed });
             return new BusSession(new BusClient(sim.OpenLink(), clock, options), robot, sim);
         }
 
         var definition = robotFile is null ? null : RobotLoader.Load(robotFile);
         return new BusSession(new BusClient(LinkFactory.Open(uri), TimeProvider.System, options), definition, null);
+    }
+
+    /// <summary>Parses <paramref name="transport"/> and checks what <see cref="LinkUri"/> leaves to the virtual robot (its <c>seed</c>).</summary>
+    /// <exception cref="FormatException">The transport is malformed; the message names the part.</exception>
+    public static LinkUri CheckTransport(string transport)
+    {
+        var uri = LinkUri.Parse(transport);
+        if (uri.Kind == LinkKind.Virtual)
+        {
+            VirtualSeed(uri);
+        }
+        else if (uri.Options.ContainsKey("seed") || uri.Options.ContainsKey("realtime"))
+        {
+            throw new FormatException($"transport '{transport}': seed and realtime apply to virtual: transports only");
+        }
+
+        return uri;
+    }
+
+    private static int VirtualSeed(LinkUri uri)
+    {
+        if (!uri.Options.TryGetValue("seed", out var s))
+        {
+            return 1;
+        }
+
+        return int.TryParse(s, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out var seed)
+            ? seed
+            : throw new FormatException($"transport '{uri}': seed '{s}' must be a whole number from 0 to {int.MaxValue}");
     }
 
     public BusRobot RequireRobot() => Robot ?? throw new ArgumentException("this command needs the robot file: add --robot <file> (or use a virtual:<robot file> transport)");

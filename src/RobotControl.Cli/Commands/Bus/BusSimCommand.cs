@@ -1,6 +1,7 @@
 using System.CommandLine;
 using RobotControl.Bus.Transports;
 using RobotControl.Bus.Transports.Serial;
+using RobotControl.Cli.Options;
 using RobotControl.Hardware.Loading;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
@@ -20,8 +21,8 @@ internal sealed class BusSimCommand : ICliCommand
         var robot = new Argument<FileInfo>("robot") { Description = "Robot data file with a modules section, e.g. hardware/robots/lb-1.0.json" };
         var pty = new Option<bool>("--pty") { Description = "Create a pseudo-terminal and print its path" };
         var device = new Option<string?>("--device") { Description = "Serve an existing tty instead (e.g. a socat pty end)" };
-        var seed = new Option<int>("--seed") { Description = "Seed of the sensor noise", DefaultValueFactory = _ => 1 };
-        var seconds = new Option<double>("--seconds") { Description = "Stop after this many seconds (0: until Ctrl+C)", DefaultValueFactory = _ => 0 };
+        var seed = CliOption.Number("--seed", "Seed of the sensor noise", 0, int.MaxValue, 1);
+        var seconds = CliOption.Number("--seconds", "Stop after this many seconds (0: until Ctrl+C)", 0.0, 7 * 86_400.0, 0.0);
         var command = new Command("bus-sim", "Expose a virtual robot's module bus on a pty (real firmware, simulated motors).");
         command.Arguments.Add(robot);
         foreach (var o in new Option[] { pty, device, seed, seconds })

@@ -1,11 +1,14 @@
 using System.CommandLine;
 using System.Globalization;
+using RobotControl.Cli.Options;
+using RobotControl.Robot.Control;
 
 namespace RobotControl.Cli.Commands.Bus;
 
 /// <summary>
 /// <c>robotctl jog &lt;transport&gt; --motor right.elbow --speed-deg-s 10 --duration-s 1</c>: turns the motors on,
-/// jogs one motor (its axis output) for a while, prints where it went, turns the motors off.
+/// jogs one motor (its axis output) for a while, prints where it went, turns the motors off. Exit 1 when a module is
+/// missing, unknown or mismatched, or the robot reports a fault.
 /// </summary>
 internal sealed class JogCommand : ICliCommand
 {
@@ -15,8 +18,8 @@ internal sealed class JogCommand : ICliCommand
     public Command Build()
     {
         var motor = new Option<string>("--motor") { Description = "arm.joint, e.g. right.elbow or left.tool_open_close", Required = true };
-        var speed = new Option<double>("--speed-deg-s") { Description = "Axis output speed, deg/s (limited to the motor's speed limit)", DefaultValueFactory = _ => 10 };
-        var duration = new Option<double>("--duration-s") { Description = "How long to jog, s", DefaultValueFactory = _ => 1 };
+        var speed = CliOption.Number("--speed-deg-s", "Axis output speed, deg/s (limited to the motor's speed limit)", -720.0, 720.0, 10.0);
+        var duration = CliOption.Number("--duration-s", "How long to jog, s", 0.001, 600.0, 1.0);
         var command = new Command("jog", "Jog one motor at a speed for a time, then stop and report.");
         var busOptions = new BusOptions(command);
         foreach (var o in new Option[] { motor, speed, duration })
@@ -50,7 +53,8 @@ internal sealed class JogCommand : ICliCommand
                     output.WriteLine(e);
                 }
 
-                return report.Missing.Count == 0 ? 0 : 1;
+                // Anything short of every module as configured and no fault is a failed jog.
+                return report.AllAsConfigured && bus.Faults == RobotFaults.None ? 0 : 1;
             });
         });
         return command;

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using RobotControl.Bus.Protocol;
+using RobotControl.Cli.Options;
 using RobotControl.Robot.Modules;
 
 namespace RobotControl.Cli.Commands.Bus;
@@ -13,8 +14,8 @@ internal sealed class ParamsCommand : ICliCommand
     /// <inheritdoc />
     public Command Build()
     {
+        // The transport belongs to get and set (params get <transport>), not to params itself.
         var command = new Command("params", "Read or write the modules' FRAM parameters.");
-        var busOptions = new BusOptions(command);
         command.Subcommands.Add(BuildGet());
         command.Subcommands.Add(BuildSet());
         return command;
@@ -22,7 +23,7 @@ internal sealed class ParamsCommand : ICliCommand
 
     private static Command BuildGet()
     {
-        var module = new Option<int?>("--module") { Description = "Only this module ID" };
+        var module = ModuleOption("Only this module ID");
         var command = new Command("get", "Print every persistent parameter with the robot file's value (* marks a difference).");
         var busOptions = new BusOptions(command);
         command.Options.Add(module);
@@ -35,7 +36,15 @@ internal sealed class ParamsCommand : ICliCommand
                 bus.Discover();
                 var only = parse.GetValue(module);
                 var differ = 0;
-                foreach (var c in bus.Controllers.Where(c => c.Present && (only is null || c.Id == only)))
+                var modules = bus.Controllers.Where(c => c.Present && (only is null || c.Id == only)).ToArray();
+                if (modules.Length == 0)
+                {
+                    throw new IOException(only is null
+                        ? $"no module of the robot file answers on {session.Client.Link.Description}"
+                        : $"--module {only}: no module of the robot file with this ID answers on {session.Client.Link.Description}");
+                }
+
+                foreach (var c in modules)
                 {
                     output.WriteLine($"module {c.Id} \"{c.Name}\"");
                     foreach (var p in ModuleParameters.For(session.Definition!, c.Definition, ControlTable.Firmware))
@@ -54,16 +63,26 @@ internal sealed class ParamsCommand : ICliCommand
         return command;
     }
 
+    /// <summary>A module ID option, in the control table's <c>id</c> range.</summary>
+    private static Option<int?> ModuleOption(string description)
+    {
+        var id = ControlTable.Firmware["id"];
+        return CliOption.OptionalNumber("--module", description, (int)id.Min, (int)id.Max);
+    }
+
     private static Command BuildSet()
     {
-        var module = new Option<int?>("--module") { Description = "Module ID" };
+        var table = ControlTable.Firmware;
+        var module = ModuleOption("Module ID");
         var field = new Option<string?>("--field") { Description = "Control-table field, e.g. kp, current_limit, speed_limit" };
-        var motor = new Option<int>("--motor") { Description = "Motor channel for per-motor fields", DefaultValueFactory = _ => 0 };
-        var value = new Option<long?>("--value") { Description = "Value in the field's units (see docs/protocol.md)" };
+        var motor = CliOption.Number("--motor", "Motor channel for per-motor fields", 0, table.MaxMotors - 1, 0);
+        var writable = table.Fields.Where(f => f.Writable).ToArray();
+        var value = CliOption.OptionalNumber("--value", "Value in the field's units (see docs/protocol.md); checked against the field's own range", writable.Min(f => (long)f.Min), writable.Max(f => (long)f.Max));
         var fromFile = new Option<bool>("--from-robot-file") { Description = "Write every parameter the robot file implies into every module" };
+        var yes = new Option<bool>("--yes") { Description = "Confirm a write of baud_rate or id (the module then answers only at the new rate or ID)" };
         var command = new Command("set", "Write one parameter (--module --field [--motor] --value) or all of them (--from-robot-file) into FRAM.");
         var busOptions = new BusOptions(command);
-        foreach (var o in new Option[] { module, field, motor, value, fromFile })
+        foreach (var o in new Option[] { module, field, motor, value, fromFile, yes })
         {
             command.Options.Add(o);
         }
@@ -77,6 +96,11 @@ internal sealed class ParamsCommand : ICliCommand
                 bus.Discover();
                 if (parse.GetValue(fromFile))
                 {
+                    foreach (var c in bus.Controllers.Where(c => c.Present))
+                    {
+                        ParameterGuard.CheckAll(session.Client, table, c.Id, ModuleParameters.For(session.Definition!, c.Definition, table));
+                    }
+
                     output.WriteLine($"wrote {bus.WriteParameters()} values; {bus.CheckParameters().Count} differ now");
                     return 0;
                 }
@@ -86,6 +110,12 @@ internal sealed class ParamsCommand : ICliCommand
                     throw new ArgumentException("give --module, --field and --value (or --from-robot-file)");
                 }
 
+                if (!table.Contains(name))
+                {
+                    throw new ArgumentException($"--field: the control table has no field '{name}' (writable: {string.Join(", ", table.Fields.Where(f => f.Writable).Select(f => f.Name))})");
+                }
+
+                ParameterGuard.CheckOne(session.Client, table, (byte)id, table[name], parse.GetValue(motor), v, parse.GetValue(yes));
                 var back = bus.WriteParameter((byte)id, name, parse.GetValue(motor), v);
                 output.WriteLine($"module {id}: {name}[{parse.GetValue(motor)}] = {back} (read back)");
                 return 0;

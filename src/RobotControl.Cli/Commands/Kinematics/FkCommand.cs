@@ -64,6 +64,12 @@ internal sealed class FkCommand : ICliCommand
         var jacobian = new double[6 * n];
         state.Jacobian(jacobian);
 
+        if (!double.IsFinite(state.ToolPose.Position.X + state.ToolPose.Position.Y + state.ToolPose.Position.Z) || !jacobian.All(double.IsFinite))
+        {
+            error.WriteLine($"{robot.SourceFile}: the tool pose or Jacobian at these joint angles is not finite; check the file's lengths and angles");
+            return 1;
+        }
+
         var c = CultureInfo.InvariantCulture;
         output.WriteLine(string.Create(c, $"{robot.Name} ({robot.SourceFile})"));
         output.WriteLine("joints (deg):");

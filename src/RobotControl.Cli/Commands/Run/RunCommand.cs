@@ -1,5 +1,8 @@
 using System.CommandLine;
 using System.Globalization;
+using RobotControl.Cli.Options;
+using RobotControl.Cli.Output;
+using RobotControl.Hardware.Loading;
 using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
@@ -16,16 +19,19 @@ namespace RobotControl.Cli.Commands.Run;
 /// </summary>
 internal sealed class RunCommand : ICliCommand
 {
+    /// <summary>Longest run accepted (a day of loop time).</summary>
+    internal static readonly TimeSpan MaxDuration = TimeSpan.FromDays(1);
+
     /// <inheritdoc />
     public Command Build()
     {
         var graph = new Argument<FileInfo>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json" };
         var isVirtual = new Option<bool>("--virtual") { Description = "Run against the virtual robot (real firmware, simulated motors) on a virtual clock, deterministically and as fast as possible" };
-        var duration = new Option<string>("--duration") { Description = "Loop time to run, e.g. 20s, 500ms, 2m", DefaultValueFactory = _ => "20s" };
-        var report = new Option<FileInfo?>("--report") { Description = "Write the report (JSON) to this file" };
+        var duration = CliOption.Duration("--duration", "Loop time to run, e.g. 20s, 500ms, 2m", TimeSpan.FromMilliseconds(1), MaxDuration, TimeSpan.FromSeconds(20));
+        var report = CliOption.OutputFile("--report", "Write the report (JSON) to this file (checked before the run starts)");
         var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: ber=<bit error rate>, reset=<arm.location|id>@<time> (comma-separated)" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (one load context each)" };
-        var seed = new Option<int>("--seed") { Description = "Seed of the virtual robot's noise and wire faults", DefaultValueFactory = _ => 1 };
+        var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
         command.Arguments.Add(graph);
         command.Options.Add(isVirtual);
@@ -37,7 +43,7 @@ internal sealed class RunCommand : ICliCommand
         command.SetAction(parse => Run(
             parse.GetValue(graph)!.FullName,
             parse.GetValue(isVirtual),
-            parse.GetValue(duration)!,
+            parse.GetValue(duration),
             parse.GetValue(report)?.FullName,
             parse.GetValue(inject),
             parse.GetValue(plugins)?.FullName,
@@ -60,8 +66,14 @@ internal sealed class RunCommand : ICliCommand
     }
 
     /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
-    internal static int Run(string graphPath, bool isVirtual, string durationText, string? reportPath, string? injectText, string? pluginsFolder, int seed, TextWriter output, TextWriter error)
+    internal static int Run(string graphPath, bool isVirtual, TimeSpan duration, string? reportPath, string? injectText, string? pluginsFolder, int seed, TextWriter output, TextWriter error)
     {
+        var catalog = Catalog(pluginsFolder);
+        foreach (var problem in catalog.Problems)
+        {
+            error.WriteLine($"plug-ins: {problem}");
+        }
+
         RunOptions options;
         try
         {
@@ -69,21 +81,16 @@ internal sealed class RunCommand : ICliCommand
             {
                 GraphPath = graphPath,
                 Virtual = isVirtual,
-                Duration = RunDuration.Parse(durationText),
+                Duration = duration,
                 Inject = FaultInjection.Parse(injectText),
                 Seed = seed,
             };
+            RunPreflight.Check(options, catalog);
         }
-        catch (FormatException ex)
+        catch (Exception ex) when (ex is FormatException or GraphException or RobotDataException)
         {
             error.WriteLine(ex.Message);
             return 2;
-        }
-
-        var catalog = Catalog(pluginsFolder);
-        foreach (var problem in catalog.Problems)
-        {
-            error.WriteLine($"plug-ins: {problem}");
         }
 
         var c = CultureInfo.InvariantCulture;
@@ -105,15 +112,29 @@ internal sealed class RunCommand : ICliCommand
             return 2;
         }
 
+        if (NonFinite(result) is { } field)
+        {
+            error.WriteLine($"run: the {field} is not a finite number: the robot file's geometry or the graph's settings are out of range; no report written");
+            return 1;
+        }
+
         Summarise(result, output);
         if (reportPath is not null)
         {
-            File.WriteAllText(reportPath, result.ToJson());
+            AtomicFile.WriteAllText(reportPath, result.ToJson());
             output.WriteLine($"report: {reportPath}");
         }
 
         return result.DeadlineMisses == 0 && result.Faults.Count == 0 ? 0 : 1;
     }
+
+    /// <summary>The first measure of <paramref name="r"/> that is not finite (a report holds numbers only), or null.</summary>
+    internal static string? NonFinite(RunReport r) =>
+        new (string Name, double Value)[]
+        {
+            ("loop time", r.DurationSeconds), ("median tick time", r.TickMedianUs), ("p99 tick time", r.TickP99Us), ("longest tick time", r.TickMaxUs),
+            ("tracking rms", r.TrackingRmsMm), ("largest tracking error", r.TrackingMaxMm),
+        }.FirstOrDefault(m => !double.IsFinite(m.Value)).Name;
 
     private static RunReport RunWithLines(RunOptions options, PluginCatalog catalog, TextWriter output)
     {

@@ -1,0 +1,98 @@
+using System.Globalization;
+using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
+using RobotControl.Robot.Modules;
+
+namespace RobotControl.Cli.Commands.Bus;
+
+/// <summary>
+/// The checks <c>params set</c> makes before anything is stored (see <see cref="ParameterRules"/>): each value against
+/// the control table, confirmation for the fields that change how the module is reached (<c>baud_rate</c>, <c>id</c>),
+/// and the cross-field rules on the module's table as read from it with the new values applied.
+/// </summary>
+internal static class ParameterGuard
+{
+    /// <summary>Fields whose change makes the module answer elsewhere: they need <c>--yes</c>.</summary>
+    private static readonly string[] Addressing = ["baud_rate", "id"];
+
+    /// <summary>Checks one write; throws with the reason when it must not happen.</summary>
+    /// <exception cref="ArgumentException">The value, field, motor or confirmation is wrong.</exception>
+    /// <exception cref="IOException">The module does not answer.</exception>
+    public static void CheckOne(BusClient client, ControlTable table, byte id, ControlTableField field, int motor, long value, bool confirmed)
+    {
+        if (ParameterRules.CheckValue(field, value) is { } problem)
+        {
+            throw new ArgumentException($"--value: {problem}");
+        }
+
+        if (motor >= field.Count)
+        {
+            throw new ArgumentException(field.Count == 1
+                ? $"--motor: {field.Name} is one value per module; give --motor 0 (or leave it out)"
+                : $"--motor: {field.Name} has motors 0..{field.Count - 1}");
+        }
+
+        if (field.Name == "baud_rate")
+        {
+            var rate = ModuleParameters.BaudFromCode((int)value);
+            if (rate < RobotControl.Bus.Transports.LinkUri.DefaultBaud)
+            {
+                throw new ArgumentException($"--value: baud_rate {value} ({rate} baud) is below the 1 Mbaud the bus is designed for; use a code from {ModuleParameters.BaudCode(RobotControl.Bus.Transports.LinkUri.DefaultBaud)} ({RobotControl.Bus.Transports.LinkUri.DefaultBaud} baud) up");
+            }
+        }
+
+        if (Addressing.Contains(field.Name) && !confirmed)
+        {
+            throw new ArgumentException($"--field {field.Name}: the module will answer only at the new {(field.Name == "id" ? "ID" : "baud rate")} after this write; add --yes to confirm");
+        }
+
+        if (client.Ping(id, out _).Outcome != ReplyOutcome.Ok)
+        {
+            throw new IOException($"--module {id}: no module answers at this ID on {client.Link.Description}; nothing was written");
+        }
+
+        if (field.Persistent && field.Count > 1)
+        {
+            var block = ReadPersistent(client, table, id);
+            var problems = ParameterRules.CheckMotor(Values(table, block, new() { [(field.Name, motor)] = value }), motor, field.Name);
+            if (problems.Count > 0)
+            {
+                throw new ArgumentException($"module {id}: {string.Join("; ", problems)}; nothing was written");
+            }
+        }
+    }
+
+    /// <summary>Checks every value the robot file implies for module <paramref name="id"/> before any is written.</summary>
+    /// <exception cref="ArgumentException">A value or rule fails (all problems, in one line).</exception>
+    /// <exception cref="IOException">The module's table cannot be read.</exception>
+    public static void CheckAll(BusClient client, ControlTable table, byte id, IReadOnlyList<ParameterValue> values)
+    {
+        var problems = values.Select(p => ParameterRules.CheckValue(p.Field, p.Value)).OfType<string>().ToList();
+        var block = ReadPersistent(client, table, id);
+        var changes = values.ToDictionary(p => (p.Field.Name, p.Motor), p => p.Value);
+        foreach (var motor in values.Where(p => p.Field.Count > 1).Select(p => p.Motor).Distinct())
+        {
+            problems.AddRange(ParameterRules.CheckMotor(Values(table, block, changes), motor));
+        }
+
+        if (problems.Count > 0)
+        {
+            throw new ArgumentException($"module {id}: the robot file's values break the module's rules: {string.Join("; ", problems)}; nothing was written");
+        }
+    }
+
+    private static byte[] ReadPersistent(BusClient client, ControlTable table, byte id)
+    {
+        var (start, end) = table.PersistentArea;
+        var block = new byte[end - start];
+        var reply = client.Read(id, (ushort)start, block);
+        return reply.Succeeded
+            ? block
+            : throw new IOException(string.Create(CultureInfo.InvariantCulture, $"module {id}: reading its parameters failed ({reply.Outcome}, error 0x{reply.Error:X2}); nothing was written"));
+    }
+
+    private static Func<string, int, long> Values(ControlTable table, byte[] block, Dictionary<(string, int), long> changes) =>
+        (name, motor) => changes.TryGetValue((name, motor), out var v)
+            ? v
+            : table[name].Decode(block.AsSpan(table[name].At(motor) - table.PersistentArea.Start, table[name].Size));
+}

@@ -1,0 +1,77 @@
+namespace RobotControl.Cli.Tests.Commands.Bus;
+
+/// <summary>
+/// <c>robotctl params</c> never stores a value nobody asked for (issue 18, class 2): each refused write leaves the
+/// module's table as it was, read back; and it says so when the link never answers (class 6), and takes the
+/// transport once (class 8).
+/// </summary>
+[Collection(PtyBus.Collection)]
+public sealed class ParamsCommandHardeningTests
+{
+    [Theory]
+    [InlineData("current_limit", 0, "65536", "outside its range 0..4095")]
+    [InlineData("control_mode", 0, "257", "outside its range 0..1")]
+    [InlineData("kp", 0, "-1", "outside its range 0..65535")]
+    [InlineData("position_min", 1, "999999999", "must be below position_max")]
+    [InlineData("pot_cal_count", 0, "1", "must be 0 (no pot homing) or 2..8")]
+    [InlineData("pot_cal_raw3", 0, "0", "strictly increasing or strictly decreasing")]
+    [InlineData("baud_rate", 0, "0", "below the 1 Mbaud")]
+    [InlineData("baud_rate", 0, "4", "add --yes")]
+    public void A_value_outside_the_control_table_or_its_rules_is_refused_and_not_stored(string field, int motor, string value, string expected)
+    {
+        using var bus = new PtyBus();
+        var before = bus.Read(1, field, motor);
+
+        var result = bus.Run("params set", "--module", "1", "--field", field, "--motor", motor.ToString(System.Globalization.CultureInfo.InvariantCulture), "--value", value);
+
+        Cli.AssertRefused(result, expected);
+        Assert.Equal(before, bus.Read(1, field, motor));
+    }
+
+    [Fact]
+    public void A_valid_value_is_stored_and_read_back()
+    {
+        using var bus = new PtyBus();
+
+        var (code, output, error) = bus.Run("params set", "--module", "2", "--field", "kp", "--motor", "0", "--value", "300");
+
+        Assert.True(code == 0, error);
+        Assert.Contains("kp[0] = 300 (read back)", output, StringComparison.Ordinal);
+        Assert.Equal(300, bus.Read(2, "kp", 0));
+    }
+
+    [Fact]
+    public void A_module_id_outside_the_bus_range_is_refused_while_parsing() =>
+        Cli.AssertRefused(Cli.Run("params", "set", "virtual:" + Cli.RepoFile("hardware/robots/lb-1.0.json"), "--module", "257", "--field", "kp", "--value", "3"), "--module: 257 is outside 0 to 252");
+
+    [Fact]
+    public void Params_get_on_a_link_that_never_answers_fails_with_a_message()
+    {
+        using var silent = new PtyBus(serve: false);
+
+        var result = silent.Run("params get", "--margin-ms", "1");
+
+        Cli.AssertRefused(result, "no module of the robot file answers");
+    }
+
+    [Fact]
+    public void Params_takes_the_transport_once()
+    {
+        var transport = "virtual:" + Cli.RepoFile("hardware/robots/lb-1.0.json");
+
+        var (code, output, error) = Cli.Run("params", "get", transport, "--module", "1");
+        var twice = Cli.Run("params", transport, "get", transport);
+
+        Assert.True(code == 0, error);
+        Assert.Contains("module 1 ", output, StringComparison.Ordinal);
+        Assert.NotEqual(0, twice.Code);
+    }
+
+    [Fact]
+    public void A_bad_seed_in_a_virtual_transport_is_named()
+    {
+        var transport = "virtual:" + Cli.RepoFile("hardware/robots/lb-1.0.json") + "?seed=abc";
+
+        Cli.AssertRefused(Cli.Run("discover", transport), "seed 'abc'");
+    }
+}
