@@ -9,6 +9,7 @@
 
 #include "rcfw/frame.h"
 #include "rcfw/module.h"
+#include "decoder_invariants.h"
 #include "rcfw_host.h"
 
 static void check_invariants(rcfw_bus *bus)
@@ -32,6 +33,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         rcfw_bus_destroy(bus);
         return 0;
     }
+    rcfw_check_decoder_invariants(data, size);
     uint32_t step_us = (uint32_t)(data[0] & 0x0F) * 20u;
     size_t start = 1;
     uint8_t frame[1100];

@@ -199,6 +199,45 @@ static void current_limit_engages_and_releases(void)
     rcfw_bus_destroy(bus);
 }
 
+/* The limit acts on the moving average, not on one sample: a single spike far over the limit (cautery noise, an ADC
+ * glitch) must not trip it, while a sustained over-current must, as soon as the exponential average
+ * a_n = a_0 + (x - a_0)(1 - (1 - 2^-k)^n) crosses the limit. With a_0 = 500, x = 3000, limit 1000 and k = 4 that is
+ * n = 4 (a_3 = 940, a_4 = 1069); integer truncation may delay it by one sample. */
+static void current_spike_is_filtered_sustained_overcurrent_trips(void)
+{
+    rcfw_bus *bus = one_module();
+    CHECK_EQ(peek8(bus, 0, RCFW_CT_CURRENT_FILTER_SHIFT), 4);
+    wr16(bus, 1, RCFW_CT_CURRENT_LIMIT, 1000);
+    wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 1);
+    wr32(bus, 1, RCFW_CT_GOAL_POSITION, 100000);
+    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
+    rcfw_set_current_raw(bus, 0, 0, 500);
+    rcfw_advance_us(bus, 30000); /* 300 periods: the average settles at 500 */
+    CHECK_EQ(rcfw_get_pwm(bus, 0, 0), 255);
+    CHECK_EQ(peek16(bus, 0, RCFW_CT_PRESENT_CURRENT), 500);
+
+    rcfw_set_current_raw(bus, 0, 0, 4095); /* one sample at full scale */
+    rcfw_advance_us(bus, 100);
+    CHECK_EQ(rcfw_get_pwm(bus, 0, 0), 255);
+    rcfw_set_current_raw(bus, 0, 0, 500);
+    for (int t = 0; t < 50; t++) {
+        rcfw_advance_us(bus, 100);
+        CHECK_EQ(rcfw_get_pwm(bus, 0, 0), 255);
+    }
+    CHECK_EQ(peek8(bus, 0, RCFW_CT_MOTOR_ERROR) & RCFW_MERR_OVERCURRENT, 0);
+
+    rcfw_advance_us(bus, 30000); /* back to a settled 500 */
+    rcfw_set_current_raw(bus, 0, 0, 3000);
+    int n = 0;
+    while (rcfw_get_pwm(bus, 0, 0) == 255 && n < 100) {
+        rcfw_advance_us(bus, 100);
+        n++;
+    }
+    CHECK(n >= 4 && n <= 5);
+    CHECK(peek8(bus, 0, RCFW_CT_MOTOR_ERROR) & RCFW_MERR_OVERCURRENT);
+    rcfw_bus_destroy(bus);
+}
+
 static void pwm_mode(void)
 {
     rcfw_bus *bus = one_module();
@@ -222,6 +261,7 @@ int main(void)
     TF_RUN(speed_limit);
     TF_RUN(p_loop_settles);
     TF_RUN(current_limit_engages_and_releases);
+    TF_RUN(current_spike_is_filtered_sustained_overcurrent_trips);
     TF_RUN(pwm_mode);
     TF_END();
 }

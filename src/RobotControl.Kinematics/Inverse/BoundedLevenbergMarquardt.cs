@@ -90,7 +90,9 @@ internal sealed class BoundedLevenbergMarquardt
             for (var i = 0; i < n; i++)
             {
                 var g = _jtr[i];
-                var pinned = !_fullTurn[i] && (q[i] <= min[i] + BoundSlackRad && g > 0) || (q[i] >= max[i] - BoundSlackRad && g < 0);
+                var atMinPushedOut = q[i] <= min[i] + BoundSlackRad && g > 0;
+                var atMaxPushedOut = q[i] >= max[i] - BoundSlackRad && g < 0;
+                var pinned = !_fullTurn[i] && (atMinPushedOut || atMaxPushedOut);
                 if (!pinned)
                 {
                     _free[freeCount++] = i;

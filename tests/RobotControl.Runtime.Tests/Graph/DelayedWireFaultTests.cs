@@ -1,0 +1,55 @@
+using RobotControl.Plugins.Sdk;
+using RobotControl.Plugins.Sdk.Ports;
+using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.Tests.Support;
+
+namespace RobotControl.Runtime.Tests.Graph;
+
+public sealed class DelayedWireFaultTests
+{
+    [Fact]
+    public void A_fault_behind_a_delayed_wire_reaches_the_instances_it_feeds_from_the_next_tick_on()
+    {
+        // a -> watcher -> thrower, and thrower.out feeds back into watcher.second one tick later. The thrower faults
+        // at tick 3; the watcher runs before it in that tick, so it learns of the fault at tick 4 through the delayed
+        // wire, exactly as it would see any value from the thrower.
+        var graph = new PluginGraph();
+        var watcher = new FaultWatcher("watcher");
+        var bystander = new FaultWatcher("bystander");
+        graph.Add(new CounterSource("a"));
+        graph.Add(watcher);
+        graph.Add(new Gain("thrower") { ThrowAtTick = 3 });
+        graph.Add(bystander);
+        graph.Connect("a.value", "watcher.in");
+        graph.Connect("watcher.out", "thrower.in");
+        graph.Connect("thrower.out", "watcher.second", delayed: true);
+        graph.Connect("a.value", "bystander.in");
+
+        Ticks.Run(graph.Compile(), 7);
+
+        Assert.Equal([false, false, false, false, true, true, true], watcher.UpstreamFaults);
+        Assert.All(bystander.UpstreamFaults, Assert.False);
+    }
+
+    private sealed class FaultWatcher : Plugin
+    {
+        private readonly InputPort _in;
+        private readonly OutputPort _out;
+
+        public FaultWatcher(string name)
+            : base(PluginContext.Standalone(name))
+        {
+            _in = DeclareInput("in");
+            DeclareInput("second");
+            _out = DeclareOutput("out", SafeValue.HoldLastFinite);
+        }
+
+        public List<bool> UpstreamFaults { get; } = [];
+
+        public override void Tick(in TickContext context)
+        {
+            UpstreamFaults.Add(UpstreamFaulted);
+            Write(_out, Read(_in));
+        }
+    }
+}

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Mutation testing of the safety-relevant code. Not part of the README's test command: a full run takes tens of
+# minutes. Reports go to out/mutation/; record the scores in docs/testing.md with the date and this command.
+#
+#   bash tools/mutation.sh                 # every .NET target below, then the firmware list
+#   bash tools/mutation.sh dotnet [NAME…]  # Stryker.NET only (NAME: Kinematics, Bus, Robot, ...)
+#   bash tools/mutation.sh firmware        # the firmware's hand-written mutations only
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+out="$root/out/mutation"
+mkdir -p "$out"
+
+# production project : its test project (the mirrored one)
+targets=(
+  "Kinematics:tests/RobotControl.Kinematics.Tests"
+  "Bus:tests/RobotControl.Bus.Tests"
+  "Robot:tests/RobotControl.Robot.Tests"
+  "Runtime:tests/RobotControl.Runtime.Tests"
+  "Host:tests/RobotControl.Host.Tests"
+  "Plugins.Standard:tests/RobotControl.Plugins.Standard.Tests"
+  "Plugins.Touch:tests/RobotControl.Plugins.Touch.Tests"
+)
+
+what="${1:-all}"
+shift || true
+
+run_dotnet() {
+  dotnet tool restore >/dev/null
+  for t in "${targets[@]}"; do
+    name="${t%%:*}"
+    tests="${t#*:}"
+    if [ $# -gt 0 ] && [[ " $* " != *" $name "* ]]; then
+      continue
+    fi
+    project="src/RobotControl.$name/RobotControl.$name.csproj"
+    [ -f "$project" ] || project="plugins/RobotControl.$name/RobotControl.$name.csproj"
+    if [ ! -f "$project" ] || [ ! -d "$tests" ]; then
+      echo "mutation: $name: no $project or no $tests; skipped"
+      continue
+    fi
+    echo "== Stryker.NET: RobotControl.$name (tests: $tests)"
+    (cd "$tests" && dotnet stryker --project "RobotControl.$name.csproj" --configuration Release --concurrency 2 \
+      --reporter json --reporter html --reporter progress --output "$out/$name" >"$out/$name.log" 2>&1) || {
+      echo "mutation: $name: Stryker failed; see $out/$name.log"; continue; }
+    python3 - "$out/$name/reports/mutation-report.json" "$name" <<'PY'
+import json, sys
+report = json.load(open(sys.argv[1]))
+counts = {}
+for f in report["files"].values():
+    for m in f["mutants"]:
+        counts[m["status"]] = counts.get(m["status"], 0) + 1
+detected = counts.get("Killed", 0) + counts.get("Timeout", 0)
+valid = detected + counts.get("Survived", 0) + counts.get("NoCoverage", 0)
+score = 100.0 * detected / valid if valid else 0.0
+print(f"{sys.argv[2]}: score {score:.1f} % ({detected} detected of {valid}; " +
+      ", ".join(f"{k} {v}" for k, v in sorted(counts.items())) + ")")
+PY
+  done
+}
+
+case "$what" in
+  dotnet) run_dotnet "$@" ;;
+  firmware) python3 firmware/tools/mutate.py --json "$out/firmware.json" ;;
+  all) run_dotnet; python3 firmware/tools/mutate.py --json "$out/firmware.json" ;;
+  *) echo "usage: bash tools/mutation.sh [all|dotnet [NAME...]|firmware]"; exit 2 ;;
+esac
