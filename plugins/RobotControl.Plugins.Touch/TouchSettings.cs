@@ -9,30 +9,30 @@ public enum TouchBackendKind
     Simulated,
 
     /// <summary>A Geomagic Touch through the OpenHaptics HD API (libHD.so / HD.dll).</summary>
-    OpenHaptics,
+    Openhaptics,
 }
 
 /// <summary>Settings of <see cref="TouchPlugin"/>.</summary>
 public sealed record TouchSettings : PluginSettings
 {
     /// <summary>The back end.</summary>
-    [Setting("Back end: simulated (scripted hand) or open_haptics (a Geomagic Touch through the OpenHaptics HD API).")]
+    [Setting("Back end: simulated (scripted hand) or openhaptics (a Geomagic Touch through the OpenHaptics HD API).")]
     public TouchBackendKind Backend { get; init; } = TouchBackendKind.Simulated;
 
     /// <summary>The OpenHaptics device name (one instance per device).</summary>
-    [Setting("open_haptics: the device's name as configured in Touch Setup, e.g. right (empty: the default device). Two devices in one graph are two instances with different names.")]
+    [Setting("openhaptics: the device's name as configured in Touch Setup, e.g. right (empty: the default device). Two devices in one graph are two instances with different names.")]
     public string Device { get; init; } = "";
 
     /// <summary>Where the HD library is.</summary>
-    [Setting("open_haptics: the HD library (libHD.so / HD.dll) or the folder holding it (empty: LD_LIBRARY_PATH, then the system's library path).", IsFilePath = true)]
+    [Setting("openhaptics: the HD library (libHD.so / HD.dll) or the folder holding it (empty: LD_LIBRARY_PATH, then the system's library path).", IsFilePath = true)]
     public string LibraryPath { get; init; } = "";
 
     /// <summary>Time over which force is ramped in when force output starts.</summary>
-    [Setting("open_haptics: force is ramped in over this time whenever force output starts (after start-up, a stale loop or force_enable going to 1).", Units = "s", Minimum = 0, Maximum = 5)]
+    [Setting("openhaptics: force is ramped in over this time whenever force output starts (after start-up, a stale loop or force_enable going to 1).", Units = "s", Minimum = 0, Maximum = 5)]
     public double ForceRampS { get; init; } = 0.25;
 
     /// <summary>Age after which the loop's force is stale.</summary>
-    [Setting("open_haptics: the device sends zero force when the loop has not handed over a force for this long.", Units = "ms", Minimum = 2, Maximum = 1000)]
+    [Setting("openhaptics: the device sends zero force when the loop has not handed over a force for this long.", Units = "ms", Minimum = 2, Maximum = 1000)]
     public double StaleAfterMs { get; init; } = 10;
 
     /// <summary>The hand script (CSV), relative to the graph file.</summary>
@@ -64,7 +64,7 @@ public sealed record TouchSettings : PluginSettings
     public double HandDampingNsPerMm { get; init; } = 0.01;
 
     /// <summary>Largest force the device renders.</summary>
-    [Setting("Largest force the device renders (the Touch's nominal peak is 3.3 N; open_haptics also caps it at the device's nominal continuous force).", Units = "N", Minimum = 0, Maximum = 10)]
+    [Setting("Largest force the device renders (the Touch's nominal peak is 3.3 N; openhaptics also caps it at the device's nominal continuous force).", Units = "N", Minimum = 0, Maximum = 10)]
     public double MaxForceN { get; init; } = 3.3;
 
     /// <inheritdoc />

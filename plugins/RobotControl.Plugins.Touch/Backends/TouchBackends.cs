@@ -10,7 +10,7 @@ internal static class TouchBackends
     public static ITouchBackend Create(TouchSettings settings, PluginContext context) => settings.Backend switch
     {
         TouchBackendKind.Simulated => SimulatedTouchBackend.Create(settings, context),
-        TouchBackendKind.OpenHaptics => new OpenHapticsTouchBackend(OpenHapticsOptions.From(settings, context)),
+        TouchBackendKind.Openhaptics => new OpenHapticsTouchBackend(OpenHapticsOptions.From(settings, context)),
         _ => throw new ArgumentOutOfRangeException(nameof(settings), settings.Backend, "unknown Touch back end"),
     };
 }
