@@ -3,6 +3,13 @@ using System.Runtime.InteropServices;
 
 namespace RobotControl.Tests.FakeHd;
 
+/// <summary>The fake libHD is one per process: its tests run one at a time.</summary>
+[CollectionDefinition(Name, DisableParallelization = true)]
+public sealed class FakeHdCollection
+{
+    public const string Name = "fake libHD";
+}
+
 /// <summary>
 /// The fake OpenHaptics library (tests/FakeHd/fakehd.c): built with CMake into the test's output folder on first use,
 /// loaded by path, and driven through its fakehd_* exports. Process-wide state: tests using it share a collection.
@@ -128,7 +135,8 @@ internal static unsafe class FakeHdLibrary
         }
     }
 
-    private static string RepoRoot()
+    /// <summary>The repository's root folder.</summary>
+    public static string RepoRoot()
     {
         for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
         {

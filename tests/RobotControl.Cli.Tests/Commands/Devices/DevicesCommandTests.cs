@@ -5,13 +5,6 @@ using RobotControl.Tests.FakeHd;
 
 namespace RobotControl.Cli.Tests.Commands.Devices;
 
-/// <summary>The fake libHD is one per process: its tests run one at a time.</summary>
-[CollectionDefinition(Name, DisableParallelization = true)]
-public sealed class FakeHdCollection
-{
-    public const string Name = "fake libHD";
-}
-
 [Collection(FakeHdCollection.Name)]
 public sealed class DevicesCommandTests
 {

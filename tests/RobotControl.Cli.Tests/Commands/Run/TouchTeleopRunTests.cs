@@ -9,7 +9,7 @@ public sealed class TouchTeleopRunTests
     [Fact]
     public void The_teleop_graph_with_both_hands_on_openhaptics_runs_headless_on_the_fake_library()
     {
-        var graph = Path.Combine(RepoRoot(), "graphs", "teleop-lb-touch.json");
+        var graph = Path.Combine(FakeHdLibrary.RepoRoot(), "graphs", "teleop-lb-touch.json");
 
         // The graph names no library: robotctl finds the fake through LD_LIBRARY_PATH, as it would find libHD.so.
         var (code, output, error) = DevicesCommandTests.Robotctl(
@@ -19,18 +19,5 @@ public sealed class TouchTeleopRunTests
         Assert.True(code == 0, output + error);
         Assert.Contains("summary: 2000 ticks", output, StringComparison.Ordinal);
         Assert.Contains("faults: 0", output, StringComparison.Ordinal);
-    }
-
-    private static string RepoRoot()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            if (File.Exists(Path.Combine(dir.FullName, "RobotControl.sln")))
-            {
-                return dir.FullName;
-            }
-        }
-
-        throw new InvalidOperationException("repository root not found");
     }
 }

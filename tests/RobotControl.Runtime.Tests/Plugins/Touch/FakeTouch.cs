@@ -7,13 +7,6 @@ using RobotControl.Tests.FakeHd;
 
 namespace RobotControl.Runtime.Tests.Plugins.Touch;
 
-/// <summary>The fake libHD is one per process: its tests run one at a time.</summary>
-[CollectionDefinition(Name, DisableParallelization = true)]
-public sealed class FakeHdCollection
-{
-    public const string Name = "fake libHD";
-}
-
 /// <summary>Touch instances on the fake library, and a loop paced by the wall clock (the fake servo runs in real time).</summary>
 internal static class FakeTouch
 {
