@@ -47,6 +47,24 @@ public sealed class OpenHapticsReadingTests
     }
 
     [Fact]
+    public void A_tick_on_the_device_allocates_nothing()
+    {
+        var touch = new PluginDriver(FakeTouch.Plugin(FakeTouch.Settings()));
+        touch.Set(("force_x", 0.2)).Start();
+        try
+        {
+            FakeTouch.TickToFrame(touch, "right", 20);
+            var before = GC.GetAllocatedBytesForCurrentThread();
+            touch.Tick(2000);
+            Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+        }
+        finally
+        {
+            touch.Plugin.Stop();
+        }
+    }
+
+    [Fact]
     public void Two_instances_run_two_devices_on_one_scheduler()
     {
         FakeHdLibrary.Key("right", 0, 1, 2, 3);
