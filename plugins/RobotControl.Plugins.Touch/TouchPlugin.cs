@@ -2,21 +2,22 @@ using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Plugins.Sdk.Settings;
 using RobotControl.Plugins.Touch.Backends;
-using RobotControl.Plugins.Touch.Simulation;
 
 namespace RobotControl.Plugins.Touch;
 
 /// <summary>
 /// A Geomagic Touch: outputs stylus position (mm), orientation (rad) and two buttons (0/1) in the device frame;
-/// inputs a 3-DOF force (N, device frame) to render, normally fed back one tick later from the haptics chain.
-/// The device itself is behind <see cref="ITouchBackend"/>.
+/// inputs a 3-DOF force (N, device frame) to render, normally fed back one tick later from the haptics chain, and
+/// <c>force_enable</c>, the seam for the safety supervisor's run level (below 0.5: no force reaches the device).
+/// The device itself is behind <see cref="ITouchBackend"/>, chosen by the <c>backend</c> setting.
 /// </summary>
-[PluginType("touch", Description = "Geomagic Touch haptic device (simulated back end: scripted hand with a hand model).")]
+[PluginType("touch", Description = "Geomagic Touch haptic device (back ends: simulated scripted hand, or the real device through OpenHaptics).")]
 public sealed class TouchPlugin : Plugin<TouchSettings>
 {
     private readonly InputPort _fx;
     private readonly InputPort _fy;
     private readonly InputPort _fz;
+    private readonly InputPort _forceEnable;
     private readonly OutputPort _x;
     private readonly OutputPort _y;
     private readonly OutputPort _z;
@@ -28,19 +29,25 @@ public sealed class TouchPlugin : Plugin<TouchSettings>
 
     /// <summary>Creates the plug-in with the back end its settings name.</summary>
     public TouchPlugin(TouchSettings settings, PluginContext context)
-        : this(settings, context, CreateBackend(settings, context))
+        : this(settings, context, TouchBackends.Create)
     {
     }
 
     /// <summary>Creates the plug-in on a given back end.</summary>
     public TouchPlugin(TouchSettings settings, PluginContext context, ITouchBackend backend)
+        : this(settings, context, Given(backend))
+    {
+    }
+
+    // The settings are validated once, by the base constructor, before the back end is made from them.
+    private TouchPlugin(TouchSettings settings, PluginContext context, Func<TouchSettings, PluginContext, ITouchBackend> backend)
         : base(settings, context)
     {
-        ArgumentNullException.ThrowIfNull(backend);
-        Backend = backend;
+        Backend = backend(Settings, Context);
         _fx = DeclareInput("force_x", "N", "force to render along device x");
         _fy = DeclareInput("force_y", "N", "force to render along device y");
         _fz = DeclareInput("force_z", "N", "force to render along device z");
+        _forceEnable = DeclareInput("force_enable", "", "1 = force may reach the device, 0 = zero force (the safety supervisor's run level)", 1);
         _x = DeclareOutput("x", SafeValue.HoldLastFinite, "mm", "stylus x (device frame)");
         _y = DeclareOutput("y", SafeValue.HoldLastFinite, "mm", "stylus y (device frame)");
         _z = DeclareOutput("z", SafeValue.HoldLastFinite, "mm", "stylus z (device frame)");
@@ -60,7 +67,7 @@ public sealed class TouchPlugin : Plugin<TouchSettings>
     /// <inheritdoc />
     public override void Tick(in TickContext context)
     {
-        var sample = Backend.Exchange(context.TimeSeconds, new TouchForce(Read(_fx), Read(_fy), Read(_fz)));
+        var sample = Backend.Exchange(context.TimeSeconds, new TouchForce(Read(_fx), Read(_fy), Read(_fz), Read(_forceEnable) >= 0.5));
         Write(_x, sample.XMm);
         Write(_y, sample.YMm);
         Write(_z, sample.ZMm);
@@ -74,13 +81,9 @@ public sealed class TouchPlugin : Plugin<TouchSettings>
     /// <inheritdoc />
     public override void Stop() => Backend.Dispose();
 
-    private static SimulatedTouchBackend CreateBackend(TouchSettings settings, PluginContext context)
+    private static Func<TouchSettings, PluginContext, ITouchBackend> Given(ITouchBackend backend)
     {
-        ArgumentNullException.ThrowIfNull(settings);
-        ArgumentNullException.ThrowIfNull(context);
-        SettingsSchema.For(typeof(TouchSettings)).ThrowIfInvalid(settings, context.InstanceName);
-        var script = HandScript.Load(context.ResolvePath(settings.Script), settings.RecordingPrefix);
-        var hand = new HandModel(settings.HandMassKg, settings.HandStiffnessNPerMm, settings.HandDampingNsPerMm);
-        return new SimulatedTouchBackend(script, hand, settings.MaxForceN, settings.TimeOffsetS, settings.Repeat);
+        ArgumentNullException.ThrowIfNull(backend);
+        return (_, _) => backend;
     }
 }

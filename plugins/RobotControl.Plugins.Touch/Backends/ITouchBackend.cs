@@ -2,9 +2,9 @@ namespace RobotControl.Plugins.Touch.Backends;
 
 /// <summary>
 /// Where a Touch plug-in's samples come from and its forces go. The simulated back end computes both on the loop
-/// thread from the tick time (deterministic); the real OpenHaptics device (a later back end) runs its 1 kHz servo
-/// callback on the driver's thread and exchanges the latest sample and force with the loop through
-/// <see cref="Sdk.Exchange.LatestValue{T}"/>, so <see cref="Exchange"/> never blocks.
+/// thread from the tick time (deterministic); the OpenHaptics back end runs its 1 kHz servo callback on the driver's
+/// thread and exchanges the latest sample and force with the loop through <see cref="Sdk.Exchange.LatestValue{T}"/>,
+/// so <see cref="Exchange"/> never blocks.
 /// </summary>
 public interface ITouchBackend : IDisposable
 {

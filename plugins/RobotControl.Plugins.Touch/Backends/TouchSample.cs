@@ -15,4 +15,5 @@ public readonly record struct TouchSample(double XMm, double YMm, double ZMm, do
 /// <param name="XN">Force along x.</param>
 /// <param name="YN">Force along y.</param>
 /// <param name="ZN">Force along z.</param>
-public readonly record struct TouchForce(double XN, double YN, double ZN);
+/// <param name="Enabled">False when the run level forbids force: the device renders none.</param>
+public readonly record struct TouchForce(double XN, double YN, double ZN, bool Enabled = true);

@@ -1,3 +1,4 @@
+using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Touch.Backends;
 
 namespace RobotControl.Plugins.Touch.Simulation;
@@ -28,6 +29,14 @@ public sealed class SimulatedTouchBackend : ITouchBackend
         _maxForceN = maxForceN;
         _timeOffset = timeOffsetSeconds;
         _repeat = repeat;
+    }
+
+    /// <summary>The back end a validated <see cref="TouchSettings"/> describes (loads the script).</summary>
+    internal static SimulatedTouchBackend Create(TouchSettings settings, PluginContext context)
+    {
+        var script = HandScript.Load(context.ResolvePath(settings.Script), settings.RecordingPrefix);
+        var hand = new HandModel(settings.HandMassKg, settings.HandStiffnessNPerMm, settings.HandDampingNsPerMm);
+        return new SimulatedTouchBackend(script, hand, settings.MaxForceN, settings.TimeOffsetS, settings.Repeat);
     }
 
     /// <inheritdoc />
@@ -73,8 +82,8 @@ public sealed class SimulatedTouchBackend : ITouchBackend
 
     private (double X, double Y, double Z) Limit(in TouchForce force)
     {
-        // The device cannot render non-finite or excessive forces: drop the former, scale the latter down.
-        if (!double.IsFinite(force.XN) || !double.IsFinite(force.YN) || !double.IsFinite(force.ZN))
+        // Force disabled (run level), non-finite or excessive: none, none, scaled down.
+        if (!force.Enabled || !double.IsFinite(force.XN) || !double.IsFinite(force.YN) || !double.IsFinite(force.ZN))
         {
             return (0, 0, 0);
         }

@@ -59,6 +59,7 @@ public sealed class ShippedGraphTests
     [Theory]
     [InlineData("graphs/teleop-lb.json", 5)]
     [InlineData("graphs/teleop-crb.json", 4)]
+    [InlineData("graphs/teleop-lb-touch.json", 5)]
     public void The_shipped_graphs_load_save_back_identically_and_start_where_the_virtual_robot_rests(string graph, int joints)
     {
         var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
