@@ -120,6 +120,28 @@ public sealed class BusClient : IDisposable
         return reply;
     }
 
+    /// <summary>
+    /// Reads the block <paramref name="start"/>..start + <paramref name="block"/>.Length of module <paramref name="id"/>
+    /// one mapped run (<see cref="ControlTable.MappedRuns"/>) at a time, since a read over unmapped bytes is refused;
+    /// unmapped bytes of <paramref name="block"/> are set to 0. Returns the first reply that did not succeed, or the last.
+    /// </summary>
+    public Reply ReadMapped(byte id, ControlTable table, int start, Span<byte> block)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        block.Clear();
+        var reply = new Reply(ReplyOutcome.Ok, 0);
+        foreach (var (address, length) in table.MappedRuns(start, start + block.Length))
+        {
+            reply = Read(id, (ushort)address, block.Slice(address - start, length));
+            if (!reply.Succeeded)
+            {
+                return reply;
+            }
+        }
+
+        return reply;
+    }
+
     /// <summary>Writes <paramref name="data"/> at <paramref name="address"/> of module <paramref name="id"/> and waits for the acknowledgement.</summary>
     public Reply Write(byte id, ushort address, ReadOnlySpan<byte> data)
     {

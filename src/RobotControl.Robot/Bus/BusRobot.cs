@@ -257,10 +257,10 @@ public sealed class BusRobot : IRobotPort, IDisposable
         var block = new byte[end - start];
         foreach (var c in _active)
         {
-            var reply = _client.Read(c.Id, (ushort)start, block);
+            var reply = _client.ReadMapped(c.Id, _table, start, block);
             if (!reply.Succeeded)
             {
-                throw new IOException($"module {c.Id} \"{c.Name}\": reading its parameters failed ({reply.Outcome}, error 0x{reply.Error:X2})");
+                throw new IOException($"module {c.Id} \"{c.Name}\": reading its parameters failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)})");
             }
 
             foreach (var p in ModuleParameters.For(Definition, c.Definition, _table))
@@ -291,7 +291,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
                 var reply = _client.Write(c.Id, p.Address, value[..p.Field.Size]);
                 if (!reply.Succeeded)
                 {
-                    throw new IOException($"module {c.Id} \"{c.Name}\": writing {p} failed ({reply.Outcome}, error 0x{reply.Error:X2})");
+                    throw new IOException($"module {c.Id} \"{c.Name}\": writing {p} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)})");
                 }
 
                 count++;
@@ -311,7 +311,8 @@ public sealed class BusRobot : IRobotPort, IDisposable
         var reply = _client.Write(moduleId, f.At(motor), bytes[..f.Size]);
         if (!reply.Succeeded)
         {
-            throw new IOException($"module {moduleId}: writing {field}[{motor}] = {value} failed ({reply.Outcome}, error 0x{reply.Error:X2})");
+            var locked = f.Persistent && StatusErrors.Number(reply.Error) == StatusError.Access ? ": the persistent area is locked while torque is on, turn torque off first" : string.Empty;
+            throw new IOException($"module {moduleId}: writing {field}[{motor}] = {value} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)}){locked}");
         }
 
         var back = ReadParameter(moduleId, field, motor);
@@ -364,7 +365,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
     {
         var (start, end) = _table.PersistentArea;
         var block = new byte[end - start];
-        if (!_client.Read(c.Id, (ushort)start, block).Succeeded)
+        if (!_client.ReadMapped(c.Id, _table, start, block).Succeeded)
         {
             foreach (var m in c.Motors)
             {
@@ -423,7 +424,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
 
         if (!request.Succeeded)
         {
-            return Result(HomingOutcome.Refused, $"the module refused the home request (status error 0x{request.Error & 0x7F:X2}{((request.Error & 0x7F) == 1 ? ", result fail" : string.Empty)}): is torque on in the module, or a pot calibration missing?");
+            return Result(HomingOutcome.Refused, $"the module refused the home request (status error {StatusErrors.Describe(request.Error)}): is torque on in the module, or a pot calibration missing?");
         }
 
         if (!hasRaw || !hasPosition || errors is null)
@@ -908,7 +909,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
         {
             Span<byte> status = stackalloc byte[2];
             var known = _client.Read(c.Id, _statusAddress, status).Succeeded;
-            throw new IOException($"module {c.Id} \"{c.Name}\": torque {(on ? "on" : "off")} refused (torque {t.Outcome} 0x{t.Error:X2}, watchdog {w.Outcome} 0x{w.Error:X2}" +
+            throw new IOException($"module {c.Id} \"{c.Name}\": torque {(on ? "on" : "off")} refused (torque {t.Outcome} {StatusErrors.Describe(t.Error)}, watchdog {w.Outcome} {StatusErrors.Describe(w.Error)}" +
                 (known ? $", hardware errors {(HardwareErrors)status[0]}, reset cause {status[1]}" : string.Empty) + "); a latched watchdog error must be cleared first");
         }
     }

@@ -71,6 +71,13 @@ typedef struct rcfw_module {
     rcfw_store runtime;
     uint8_t runtime_saved[RCFW_RUNTIME_LEN];
     rcfw_parser rx;
+    /* REG WRITE waiting for ACTION (reg_len 0: none) */
+    uint16_t reg_addr;
+    uint16_t reg_len;
+    uint8_t reg_data[RCFW_CT_SIZE];
+    /* SYNC/BULK READ reply built in tx, sent once chain_prev's status has been heard (chain_len 0: none) */
+    uint8_t chain_prev;
+    uint16_t chain_len;
     uint8_t body[RCFW_CT_SIZE + 8u];
     uint8_t tx[RCFW_TX_MAX];
     rcfw_stats stats;
