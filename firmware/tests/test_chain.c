@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "bus_helpers.h"
+#include "rcfw/crc16.h"
 
 static rcfw_bus *make3(void)
 {
@@ -86,10 +87,94 @@ static void a_missing_module_stops_the_chain_and_a_new_instruction_ends_the_wait
     rcfw_bus_destroy(bus);
 }
 
+static void fast_sync_read_is_one_packet_with_a_crc_per_part(void)
+{
+    rcfw_bus *bus = make3();
+    uint8_t q[7] = {(uint8_t)RCFW_CT_GOAL_POSITION, 0, 8, 0, 2, 3, 1};
+    wr32(bus, 3, RCFW_CT_GOAL_POSITION + 4, 0x11223344);
+    rcfw_advance_us(bus, 2000);
+    uint8_t drain[64];
+    (void)rcfw_bus_read(bus, drain, sizeof drain);
+    send_frame(bus, RCFW_ID_BROADCAST, RCFW_INST_FAST_SYNC_READ, q, 7);
+    /* 17-byte instruction, then 8 header bytes and 3 parts of 2 + 8 + 2 bytes, back to back */
+    CHECK_EQ(until_idle(bus, 100000), 170u + (8u + 3u * 12u) * 10u);
+    uint8_t pk[128];
+    int n = rcfw_bus_read(bus, pk, sizeof pk);
+    CHECK_EQ(n, 44);
+    static const uint8_t head[8] = {0xFF, 0xFF, 0xFD, 0x00, 0xFE, 37, 0, 0x55};
+    CHECK(memcmp(pk, head, 8) == 0);
+    const uint8_t order[3] = {2, 3, 1};
+    for (int k = 0; k < 3; k++) {
+        const uint8_t *part = pk + 8 + 12 * k;
+        CHECK_EQ(part[0], 0);
+        CHECK_EQ(part[1], order[k]);
+        uint16_t crc = rcfw_crc16(0, pk, (size_t)(8 + 12 * k + 10));
+        CHECK_EQ(part[10] | (part[11] << 8), crc);
+    }
+    int32_t g;
+    memcpy(&g, pk + 8 + 12 + 2 + 4, 4);
+    CHECK_EQ(g, 0x11223344);
+    /* the whole packet is also a valid status frame for a plain decoder (no stuffing needed here) */
+    rcfw_parser p;
+    rcfw_parser_reset(&p);
+    int frames = 0;
+    for (int i = 0; i < n; i++) {
+        frames += rcfw_parser_feed(&p, pk[i]) == RCFW_RX_FRAME;
+    }
+    CHECK_EQ(frames, 1);
+    CHECK_EQ(rcfw_bus_collisions(bus), 0);
+    rcfw_bus_destroy(bus);
+}
+
+static void fast_bulk_read_parts_of_different_lengths_and_errors(void)
+{
+    rcfw_bus *bus = make3();
+    uint8_t q[15] = {3, (uint8_t)RCFW_CT_ID, 0, 1, 0,     /* id 3: 1 byte */
+                     1, 3, 0, 2, 0,                       /* id 1: unmapped bytes 3..4 -> access error */
+                     2, 0, 0, 3, 0};                      /* id 2: model number + motor count */
+    send_frame(bus, RCFW_ID_BROADCAST, RCFW_INST_FAST_BULK_READ, q, 15);
+    CHECK_EQ(until_idle(bus, 100000), (10u + 15u) * 10u + (8u + 5u + 6u + 7u) * 10u);
+    uint8_t pk[64];
+    int n = rcfw_bus_read(bus, pk, sizeof pk);
+    CHECK_EQ(n, 26);
+    CHECK_EQ(pk[5], 1 + 5 + 6 + 7);
+    CHECK_EQ(pk[8], 0);
+    CHECK_EQ(pk[9], 3);
+    CHECK_EQ(pk[10], 3);
+    CHECK_EQ(pk[13], RCFW_ERR_ACCESS);
+    CHECK_EQ(pk[14], 1);
+    CHECK_EQ(pk[15] | pk[16], 0);
+    CHECK_EQ(pk[19], 0);
+    CHECK_EQ(pk[20], 2);
+    CHECK_EQ(pk[21] | (pk[22] << 8), 0x4D31);
+    CHECK_EQ(pk[23], 2);
+    CHECK_EQ(pk[24] | (pk[25] << 8), rcfw_crc16(0, pk, 24));
+    CHECK_EQ(rcfw_bus_collisions(bus), 0);
+    rcfw_bus_destroy(bus);
+}
+
+static void fast_read_after_a_missing_module_stops(void)
+{
+    rcfw_bus *bus = make3();
+    uint8_t q[7] = {(uint8_t)RCFW_CT_ID, 0, 1, 0, 1, 9, 2};
+    send_frame(bus, RCFW_ID_BROADCAST, RCFW_INST_FAST_SYNC_READ, q, 7);
+    rcfw_advance_us(bus, 5000);
+    uint8_t pk[64];
+    CHECK_EQ(rcfw_bus_read(bus, pk, sizeof pk), 8 + 5); /* header and id 1's part; id 2 waits for 9 */
+    send_frame(bus, 2, RCFW_INST_PING, 0, 0);
+    status_t st[2];
+    CHECK_EQ(collect(bus, 5000, st, 2), 1);
+    CHECK_EQ(st[0].id, 2);
+    rcfw_bus_destroy(bus);
+}
+
 int main(void)
 {
     TF_RUN(sync_read_replies_follow_each_other);
     TF_RUN(bulk_read_lengths_per_module);
     TF_RUN(a_missing_module_stops_the_chain_and_a_new_instruction_ends_the_wait);
+    TF_RUN(fast_sync_read_is_one_packet_with_a_crc_per_part);
+    TF_RUN(fast_bulk_read_parts_of_different_lengths_and_errors);
+    TF_RUN(fast_read_after_a_missing_module_stops);
     TF_END();
 }

@@ -220,6 +220,11 @@ static void handle_frame(rcfw_module *m)
         return;
     }
     m->chain_len = 0; /* a new instruction ends any wait for a previous module */
+    m->fast_len = 0;
+    if (f->inst == RCFW_INST_FAST_SYNC_READ || f->inst == RCFW_INST_FAST_BULK_READ) {
+        rcfwi_fast_read(m, f);
+        return;
+    }
     if (list_instruction(m, f, my) || (!bcast && f->id != my)) {
         return;
     }
@@ -282,6 +287,7 @@ static void handle_frame(rcfw_module *m)
 void rcfw_module_rx_byte(rcfw_module *m, uint8_t byte)
 {
     m->rx_idle_ticks = 0;
+    rcfwi_fast_heard(m, byte);
     rcfw_rx_result r = rcfw_parser_feed(&m->rx, byte);
     switch (r) {
     case RCFW_RX_FRAME:

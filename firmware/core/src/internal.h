@@ -42,4 +42,7 @@ uint8_t rcfwi_check_read(const rcfw_module *m, uint16_t addr, uint16_t len);
 uint8_t rcfwi_check_write(rcfw_module *m, uint16_t addr, const uint8_t *data, uint16_t len);
 /* Check, apply atomically and, if persistent bytes changed, save them before returning. */
 uint8_t rcfwi_write(rcfw_module *m, uint16_t addr, const uint8_t *data, uint16_t len);
+/* FAST SYNC READ / FAST BULK READ instruction (fast.c), and every byte heard while a part waits. */
+void rcfwi_fast_read(rcfw_module *m, const rcfw_parser *f);
+void rcfwi_fast_heard(rcfw_module *m, uint8_t b);
 #endif

@@ -78,6 +78,12 @@ typedef struct rcfw_module {
     /* SYNC/BULK READ reply built in tx, sent once chain_prev's status has been heard (chain_len 0: none) */
     uint8_t chain_prev;
     uint16_t chain_len;
+    /* FAST SYNC/BULK READ part in tx, sent when the packet reaches fast_at bytes (fast_len 0: none) */
+    uint16_t fast_len;
+    uint16_t fast_at;
+    uint16_t fast_pos;
+    uint16_t fast_crc;
+    uint16_t fast_total; /* LEN of the combined packet */
     uint8_t body[RCFW_CT_SIZE + 8u];
     uint8_t tx[RCFW_TX_MAX];
     rcfw_stats stats;
