@@ -81,7 +81,7 @@ static bool persistent_valid(const rcfw_module *m)
 static void set_fixed_identity(rcfw_module *m)
 {
     rcfwi_ct_w16(m, RCFW_CT_MODEL_NUMBER, (uint16_t)rcfw_ct_fields[RCFW_CT_FIELD_MODEL_NUMBER].def);
-    m->ct[RCFW_CT_FIRMWARE_VERSION] = RCFW_FIRMWARE_VERSION;
+    m->ct[RCFW_CT_FIRMWARE_VERSION] = (uint8_t)rcfw_ct_fields[RCFW_CT_FIELD_FIRMWARE_VERSION].def;
     m->ct[RCFW_CT_MOTOR_COUNT] = m->n_motors;
 }
 

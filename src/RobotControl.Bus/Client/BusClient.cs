@@ -9,7 +9,7 @@ namespace RobotControl.Bus.Client;
 /// per-cycle exchange, broadcast discovery and per-module statistics. Time comes from the given
 /// <see cref="TimeProvider"/>. After construction no request allocates. One thread uses a client at a time.
 /// </summary>
-public sealed class BusClient : IDisposable
+public sealed partial class BusClient : IDisposable
 {
     private const int MaxId = 252;
     private readonly IByteLink _link;

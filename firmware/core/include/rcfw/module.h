@@ -11,7 +11,6 @@
 #include "rcfw_ct_gen.h"
 
 #define RCFW_CONTROL_RATE_HZ 10000u
-#define RCFW_FIRMWARE_VERSION 1u
 #define RCFW_RX_TIMEOUT_TICKS 20u   /* 2 ms of silence inside a frame drops it */
 #define RCFW_RUNTIME_SAVE_TICKS 10u /* position/goal record at most every 1 ms */
 
