@@ -1,6 +1,7 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports;
+using RobotControl.Bus.Transports.Serial;
 using RobotControl.Hardware.Model;
 using RobotControl.Robot.Modules;
 using RobotControl.Simulation.Bus;
@@ -213,8 +214,14 @@ public sealed unsafe class VirtualRobot : IDisposable
         var buffer = new byte[4096];
         var start = System.Diagnostics.Stopwatch.GetTimestamp();
         var origin = _nowUs;
+        var pty = port as PseudoTerminal;
         while (!cancellationToken.IsCancellationRequested)
         {
+            if (pty is not null)
+            {
+                FollowLineBaud(pty.ClientBaud); // the host re-opened its port at a new baud (after a baud change)
+            }
+
             var n = port.Read(buffer, TimeSpan.FromMicroseconds(200));
             if (n > 0)
             {
@@ -241,6 +248,18 @@ public sealed unsafe class VirtualRobot : IDisposable
                 }
             }
             while (_nowUs < wall && !cancellationToken.IsCancellationRequested);
+        }
+    }
+
+    /// <summary>The baud the simulated line runs at now (it follows the client's pty setting when served on a pty).</summary>
+    public int LineBaud => (int)Math.Round(10e6 / _byteUs);
+
+    private void FollowLineBaud(int baud)
+    {
+        if (baud > 0 && baud != LineBaud)
+        {
+            FirmwareHost.Check(FirmwareHost.BusSetBaud(_bus, (uint)baud), "rcfw_bus_set_baud");
+            _byteUs = 10e6 / baud;
         }
     }
 

@@ -4,7 +4,7 @@ protocol, not from this code base. It talks to a bus on a serial device (e.g. th
 and checks that every instruction answers as the protocol says, that each error case gets its protocol error code,
 and that no command is silently dropped.
 
-usage: dxl_master.py /dev/pts/N [--baud 1000000]
+usage: dxl_master.py /dev/pts/N      (the modules at 1 Mbaud, their factory baud)
 Exit status 0 when every check passed; one line per check on stdout."""
 import os
 import select
@@ -50,6 +50,7 @@ class Bus:
         attrs = termios.tcgetattr(self.fd)
         attrs[0] = attrs[1] = attrs[3] = 0  # raw: no input/output/local processing
         attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
+        attrs[4] = attrs[5] = termios.B1000000  # the modules' factory baud
         attrs[6][termios.VMIN] = 0
         attrs[6][termios.VTIME] = 0
         termios.tcsetattr(self.fd, termios.TCSANOW, attrs)
