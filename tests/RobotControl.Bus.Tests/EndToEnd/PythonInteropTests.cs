@@ -1,8 +1,5 @@
 using System.Diagnostics;
 using RobotControl.Bus.Tests.Support;
-using RobotControl.Bus.Transports.Serial;
-using RobotControl.Simulation;
-using RobotControl.Simulation.Time;
 
 namespace RobotControl.Bus.Tests.EndToEnd;
 
@@ -16,30 +13,18 @@ public sealed class PythonInteropTests
     [Fact]
     public async Task The_independent_master_finds_every_instruction_and_error_code_as_the_protocol_defines_them()
     {
-        using var pty = PseudoTerminal.Create();
-        using var sim = new VirtualRobot(VirtualLb.Lb, new ManualTimeProvider());
-        using var stop = new CancellationTokenSource();
-        var server = new Thread(() => sim.Serve(pty, stop.Token)) { IsBackground = true };
-        server.Start();
-        try
-        {
-            var script = Path.Combine(RepoPaths.Root, "tests", "interop", "dxl_master.py");
-            var start = new ProcessStartInfo("python3", $"\"{script}\" {pty.SlavePath}") { RedirectStandardOutput = true, RedirectStandardError = true };
-            using var master = Process.Start(start)!;
-            var output = master.StandardOutput.ReadToEndAsync();
-            var errors = master.StandardError.ReadToEndAsync();
-            using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(60));
-            await master.WaitForExitAsync(timeout.Token);
-            var text = await output + await errors;
-            Assert.True(master.ExitCode == 0, text);
-            Assert.DoesNotContain("FAIL", text, StringComparison.Ordinal);
-            Assert.Contains("ok   fast bulk read: one packet, each part with its CRC", text, StringComparison.Ordinal);
-            Assert.Contains("ok   bulk write applied (second module)", text, StringComparison.Ordinal);
-        }
-        finally
-        {
-            stop.Cancel();
-            server.Join();
-        }
+        using var served = new ServedPty();
+        var script = Path.Combine(RepoPaths.Root, "tests", "interop", "dxl_master.py");
+        var start = new ProcessStartInfo("python3", $"\"{script}\" {served.SlavePath}") { RedirectStandardOutput = true, RedirectStandardError = true };
+        using var master = Process.Start(start)!;
+        var output = master.StandardOutput.ReadToEndAsync();
+        var errors = master.StandardError.ReadToEndAsync();
+        using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(60));
+        await master.WaitForExitAsync(timeout.Token);
+        var text = await output + await errors;
+        Assert.True(master.ExitCode == 0, text);
+        Assert.DoesNotContain("FAIL", text, StringComparison.Ordinal);
+        Assert.Contains("ok   fast bulk read: one packet, each part with its CRC", text, StringComparison.Ordinal);
+        Assert.Contains("ok   bulk write applied (second module)", text, StringComparison.Ordinal);
     }
 }
