@@ -99,6 +99,16 @@ static rcfw_bus *one_module(void)
     return bus;
 }
 
+/* A persistent parameter can only be written with torque off (access error otherwise): off, write, on. */
+static void tune16(rcfw_bus *bus, uint16_t addr, uint16_t v)
+{
+    wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 0);
+    wr16(bus, 1, addr, v);
+    CHECK_EQ(peek16(bus, 0, addr), v);
+    wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 1);
+    rcfw_advance_us(bus, 200);
+}
+
 static void speed_limit(void)
 {
     rcfw_bus *bus = one_module();
@@ -109,24 +119,31 @@ static void speed_limit(void)
     int32_t sp = peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT);
     CHECK(sp >= 498 && sp <= 502);
     /* fractional speeds accumulate: 7 counts/s for 1 s */
-    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 7);
+    tune16(bus, RCFW_CT_SPEED_LIMIT, 7);
     int32_t sp0 = peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT);
     rcfw_advance_us(bus, 1000000);
     int32_t d = peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT) - sp0;
     CHECK(d >= 6 && d <= 8);
     /* goal behind: moves back down, stops exactly at the goal */
-    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 5000);
+    tune16(bus, RCFW_CT_SPEED_LIMIT, 5000);
     wr32(bus, 1, RCFW_CT_GOAL_POSITION, -50);
     rcfw_advance_us(bus, 300000);
     CHECK_EQ(peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT), -50);
     /* 0 = unlimited */
-    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
+    tune16(bus, RCFW_CT_SPEED_LIMIT, 0);
     wr32(bus, 1, RCFW_CT_GOAL_POSITION, 77777);
     rcfw_advance_us(bus, 200);
     CHECK_EQ(peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT), 77777);
-    /* position limits clamp the goal */
+    /* position limits clamp a goal set before them; a goal beyond them is refused (data limit) */
+    wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 0);
     wr32(bus, 1, RCFW_CT_POSITION_MAX, 5000);
+    wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 1);
     rcfw_advance_us(bus, 200);
+    status_t drain[16];
+    (void)collect(bus, 2000, drain, 16); /* the replies of the writes above */
+    int32_t beyond = 5001;
+    CHECK_EQ(write_ack(bus, 1, RCFW_CT_GOAL_POSITION, &beyond, 4), RCFW_ERR_DATA_LIMIT);
+    CHECK_EQ(peek32(bus, 0, RCFW_CT_GOAL_POSITION), 77777);
     CHECK_EQ(peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT), 5000);
     rcfw_bus_destroy(bus);
 }
@@ -160,9 +177,9 @@ static void current_limit_engages_and_releases(void)
 {
     rcfw_bus *bus = one_module();
     wr16(bus, 1, RCFW_CT_CURRENT_LIMIT, 1000);
+    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
     wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 1);
     wr32(bus, 1, RCFW_CT_GOAL_POSITION, 100000);
-    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
     rcfw_advance_us(bus, 1000);
     CHECK_EQ(rcfw_get_pwm(bus, 0, 0), 255);
     /* stalled motor: current far above the limit */
@@ -192,7 +209,7 @@ static void current_limit_engages_and_releases(void)
     rcfw_advance_us(bus, 40000);
     CHECK_EQ(rcfw_get_pwm(bus, 0, 0), 255);
     /* limit 0 disables */
-    wr16(bus, 1, RCFW_CT_CURRENT_LIMIT, 0);
+    tune16(bus, RCFW_CT_CURRENT_LIMIT, 0);
     rcfw_set_current_raw(bus, 0, 0, 4095);
     rcfw_advance_us(bus, 10000);
     CHECK_EQ(rcfw_get_pwm(bus, 0, 0), 255);

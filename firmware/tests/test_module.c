@@ -30,7 +30,7 @@ static void ping_and_timing(void)
     rcfw_advance_us(bus, 70);
     CHECK_EQ(rcfw_bus_read(bus, buf + 7, sizeof buf - 7), 7);
     CHECK_EQ(rcfw_get_tx_enable(bus, 0), 0);
-    const uint8_t expect[] = {0xFF, 0xFF, 0xFD, 0x00, 0x01, 0x07, 0x00, 0x55, 0x00, 0x31, 0x4D, 0x01};
+    const uint8_t expect[] = {0xFF, 0xFF, 0xFD, 0x00, 0x01, 0x07, 0x00, 0x55, 0x00, 0x31, 0x4D, 0x02};
     CHECK(memcmp(buf, expect, sizeof expect) == 0);
     /* wrong ID: silence */
     send_frame(bus, 9, RCFW_INST_PING, 0, 0);
@@ -56,25 +56,35 @@ static void read_write(void)
 {
     rcfw_bus *bus = make(1);
     status_t st[2];
-    uint8_t p[4] = {0, 0, 10, 0}; /* read 0..9 */
+    uint8_t p[4] = {0, 0, 3, 0}; /* read 0..2: model number, motor count */
     send_frame(bus, 1, RCFW_INST_READ, p, 4);
     CHECK_EQ(collect(bus, 2000, st, 2), 1);
     CHECK_EQ(st[0].error, 0);
-    CHECK_EQ(st[0].len, 10);
+    CHECK_EQ(st[0].len, 3);
     CHECK_EQ(st[0].data[0] | (st[0].data[1] << 8), 0x4D31);
     CHECK_EQ(st[0].data[2], 4); /* motor count */
-    CHECK_EQ(st[0].data[6], 1); /* firmware version */
-    CHECK_EQ(st[0].data[7], 1); /* id */
-    CHECK_EQ(st[0].data[8], 3); /* baud code */
+    uint8_t p6[4] = {6, 0, 3, 0}; /* 6..8: firmware version, id, baud */
+    send_frame(bus, 1, RCFW_INST_READ, p6, 4);
+    CHECK_EQ(collect(bus, 2000, st, 2), 1);
+    CHECK_EQ(st[0].error, 0);
+    CHECK_EQ(st[0].data[0], 2); /* firmware version */
+    CHECK_EQ(st[0].data[1], 1); /* id */
+    CHECK_EQ(st[0].data[2], 3); /* baud code */
+    /* a read over unmapped bytes (3..5) is an access error, with no data */
+    uint8_t gap[4] = {0, 0, 10, 0};
+    send_frame(bus, 1, RCFW_INST_READ, gap, 4);
+    CHECK_EQ(collect(bus, 2000, st, 2), 1);
+    CHECK_EQ(st[0].error, RCFW_ERR_ACCESS);
+    CHECK_EQ(st[0].len, 0);
     /* write and read back a persistent value */
     uint16_t kp = 777;
     CHECK_EQ(write_ack(bus, 1, RCFW_CT_KP + 2 * RCFW_CT_KP_STRIDE, &kp, 2), 0);
     CHECK_EQ(peek16(bus, 0, RCFW_CT_KP + 2 * RCFW_CT_KP_STRIDE), 777);
     /* errors: read out of range, bad read length, read-only, unmapped, over the limit */
-    uint8_t r1[4] = {0x40, 0x01, 10, 0}; /* 320 + 10 > 324 */
+    uint8_t r1[4] = {0x40, 0x01, 10, 0}; /* 320 + 10 > 328: past the table */
     send_frame(bus, 1, RCFW_INST_READ, r1, 4);
     CHECK_EQ(collect(bus, 2000, st, 2), 1);
-    CHECK_EQ(st[0].error, RCFW_ERR_DATA_RANGE);
+    CHECK_EQ(st[0].error, RCFW_ERR_ACCESS);
     send_frame(bus, 1, RCFW_INST_READ, r1, 3);
     CHECK_EQ(collect(bus, 2000, st, 2), 1);
     CHECK_EQ(st[0].error, RCFW_ERR_DATA_LENGTH);
@@ -85,10 +95,10 @@ static void read_write(void)
     CHECK_EQ(write_ack(bus, 1, 3, &x, 1), RCFW_ERR_ACCESS);
     CHECK_EQ(write_ack(bus, 1, RCFW_CT_PRESENT_POSITION, &x, 1), RCFW_ERR_ACCESS);
     uint8_t id = 253;
-    CHECK_EQ(write_ack(bus, 1, RCFW_CT_ID, &id, 1), RCFW_ERR_DATA_LIMIT);
+    CHECK_EQ(write_ack(bus, 1, RCFW_CT_ID, &id, 1), RCFW_ERR_DATA_RANGE);
     CHECK_EQ(peek8(bus, 0, RCFW_CT_ID), 1);
     int16_t pwm = 300;
-    CHECK_EQ(write_ack(bus, 1, RCFW_CT_GOAL_PWM, &pwm, 2), RCFW_ERR_DATA_LIMIT);
+    CHECK_EQ(write_ack(bus, 1, RCFW_CT_GOAL_PWM, &pwm, 2), RCFW_ERR_DATA_RANGE);
     /* a write spanning a good and a read-only field changes nothing */
     uint8_t span[3] = {9, 9, 9}; /* 6 (fw, R), 7 (id), 8 (baud) */
     CHECK_EQ(write_ack(bus, 1, 6, span, 3), RCFW_ERR_ACCESS);
@@ -313,7 +323,7 @@ static void watchdog_stops_and_latches(void)
     CHECK(rcfw_get_pwm(bus, 0, 0) > 0);
     CHECK_EQ(rcfw_get_driver_enable(bus, 0, 0), 1);
     /* writing a non-zero error status is refused */
-    CHECK_EQ(write_ack(bus, 1, RCFW_CT_HARDWARE_ERROR_STATUS, &one, 1), RCFW_ERR_DATA_LIMIT);
+    CHECK_EQ(write_ack(bus, 1, RCFW_CT_HARDWARE_ERROR_STATUS, &one, 1), RCFW_ERR_DATA_RANGE);
     rcfw_bus_destroy(bus);
 }
 
@@ -557,7 +567,7 @@ static void home_request_refused_changes_nothing(void)
     CHECK_EQ(write_ack(bus, 1, RCFW_CT_HOME_REQUEST, &req, 1), RCFW_ERR_RESULT_FAIL);
     /* bits beyond the 4 motors: out of range */
     req = 0x11;
-    CHECK_EQ(write_ack(bus, 1, RCFW_CT_HOME_REQUEST, &req, 1), RCFW_ERR_DATA_LIMIT);
+    CHECK_EQ(write_ack(bus, 1, RCFW_CT_HOME_REQUEST, &req, 1), RCFW_ERR_DATA_RANGE);
     /* the reply is exactly the shared refusal vector */
     const tv_vector *v = vector("status_result_fail_home_refused");
     req = 0x02;

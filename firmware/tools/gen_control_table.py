@@ -20,7 +20,7 @@ def main():
                 if owner[b] is not None:
                     sys.exit("field %s overlaps %s at %d" % (f["name"], owner[b], b))
                 owner[b] = f["name"]
-        if not (f["min"] <= f["default"] <= f["max"]) and f["access"] == "RW":
+        if not (f["min"] <= f["default"] <= f["max"]) and f["access"] in ("RW", "W"):
             sys.exit("default of %s out of range" % f["name"])
     h = ["/* GENERATED from protocol/control-table.json by tools/gen_control_table.py. Do not edit. */",
          "#ifndef RCFW_CT_GEN_H", "#define RCFW_CT_GEN_H", "#include <stdint.h>",
@@ -37,16 +37,16 @@ def main():
         h.append("#define RCFW_CT_FIELD_%s %d" % (n, i))
     h.append("#define RCFW_CT_FIELD_COUNT %d" % len(d["fields"]))
     h += ["typedef struct {", "    uint16_t address;", "    uint8_t size;", "    uint8_t count;",
-          "    uint8_t stride;", "    uint8_t flags; /* bit0 writable, bit1 persistent, bit2 signed */",
+          "    uint8_t stride;", "    uint8_t flags; /* bit0 writable, bit1 persistent, bit2 signed, bit3 write-only */",
           "    int32_t min;", "    int32_t max;", "    int32_t def;", "} rcfw_ct_field;",
-          "#define RCFW_CT_F_WRITABLE 1u", "#define RCFW_CT_F_PERSISTENT 2u", "#define RCFW_CT_F_SIGNED 4u",
+          "#define RCFW_CT_F_WRITABLE 1u", "#define RCFW_CT_F_PERSISTENT 2u", "#define RCFW_CT_F_SIGNED 4u", "#define RCFW_CT_F_WRITE_ONLY 8u",
           "extern const rcfw_ct_field rcfw_ct_fields[RCFW_CT_FIELD_COUNT];",
           "/* byte -> field index + 1 (0 = unmapped) */",
           "extern const uint8_t rcfw_ct_owner[RCFW_CT_SIZE];", "#endif", ""]
     c = ["/* GENERATED from protocol/control-table.json by tools/gen_control_table.py. Do not edit. */",
          '#include "rcfw_ct_gen.h"', "const rcfw_ct_field rcfw_ct_fields[RCFW_CT_FIELD_COUNT] = {"]
     for f in d["fields"]:
-        fl = (1 if f["access"] == "RW" else 0) | (2 if f["area"] == "persistent" else 0) | (4 if f["type"][0] == "i" else 0)
+        fl = (1 if f["access"] in ("RW", "W") else 0) | (8 if f["access"] == "W" else 0) | (2 if f["area"] == "persistent" else 0) | (4 if f["type"][0] == "i" else 0)
         def lit(v):
             return "(int32_t)%dLL" % v if v > 2147483647 or v < -2147483647 else "%d" % v
         # u32 limits are clamped into int32 range: u32 fields use 0..INT32_MAX

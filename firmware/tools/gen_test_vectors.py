@@ -29,6 +29,21 @@ def main():
             v["error"] if v["error"] is not None else -1))
     out.append("};")
     out.append("#define TV_COUNT %d" % len(d["vectors"]))
+    # exchanges: steps of (request, expected reply or none) against a fresh module
+    out.append("typedef struct { const uint8_t *request; uint16_t request_len; const uint8_t *reply; uint16_t reply_len; } tv_step;")
+    out.append("typedef struct { const char *name; const tv_step *steps; int step_count; } tv_exchange;")
+    for i, x in enumerate(d.get("exchanges", [])):
+        for j, st in enumerate(x["steps"]):
+            out.append("static const uint8_t tx_q%d_%d[] = %s;" % (i, j, arr(st["request_hex"])[0]))
+            out.append("static const uint8_t tx_r%d_%d[] = %s;" % (i, j, arr(st["reply_hex"])[0]))
+        out.append("static const tv_step tx_s%d[] = {%s};" % (i, ",".join(
+            "{tx_q%d_%d, %d, tx_r%d_%d, %d}" % (i, j, arr(st["request_hex"])[1], i, j, arr(st["reply_hex"])[1])
+            for j, st in enumerate(x["steps"]))))
+    out.append("static const tv_exchange tv_exchanges[] = {")
+    for i, x in enumerate(d.get("exchanges", [])):
+        out.append('  {"%s", tx_s%d, %d},' % (x["name"], i, len(x["steps"])))
+    out.append("};")
+    out.append("#define TV_EXCHANGE_COUNT %d" % len(d.get("exchanges", [])))
     open(sys.argv[2], "w").write("\n".join(out) + "\n")
 
 if __name__ == "__main__":

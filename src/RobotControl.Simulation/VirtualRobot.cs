@@ -20,7 +20,7 @@ namespace RobotControl.Simulation;
 /// (<see cref="ScheduleReset"/>), power cycles, stalled motors (<see cref="VirtualAxis.ObstacleTorqueNm"/>).
 /// Not thread-safe: one thread drives it (the links it hands out run on the caller's thread).
 /// </summary>
-public sealed unsafe class VirtualRobot : IDisposable
+public sealed unsafe partial class VirtualRobot : IDisposable
 {
     private readonly ManualTimeProvider _clock;
     private readonly long _clockOrigin;
@@ -202,50 +202,6 @@ public sealed unsafe class VirtualRobot : IDisposable
             FirmwareHost.Check(FirmwareHost.PeekTable(_bus, ModuleIndex(moduleId), address, p, destination.Length), "rcfw_peek_table");
         }
     }
-
-    /// <summary>
-    /// Serves the bus on <paramref name="port"/> (a pty master or any byte link) in real time until cancelled: bytes
-    /// from the port go to the modules, their replies back, and simulated time follows the wall clock.
-    /// </summary>
-    public void Serve(IByteLink port, CancellationToken cancellationToken)
-    {
-        ArgumentNullException.ThrowIfNull(port);
-        var buffer = new byte[4096];
-        var start = System.Diagnostics.Stopwatch.GetTimestamp();
-        var origin = _nowUs;
-        while (!cancellationToken.IsCancellationRequested)
-        {
-            var n = port.Read(buffer, TimeSpan.FromMicroseconds(200));
-            if (n > 0)
-            {
-                HostWrite(buffer.AsSpan(0, n));
-            }
-
-            // Follow the wall clock in steps of at most 1 ms, handing replies out as soon as they are complete. When
-            // the simulation cannot keep up, it slips (simulated time runs slower) rather than answer late.
-            var wall = origin + (long)System.Diagnostics.Stopwatch.GetElapsedTime(start).TotalMicroseconds;
-            if (wall - _nowUs > MaxRealTimeLagUs)
-            {
-                origin -= wall - _nowUs - MaxRealTimeLagUs;
-                SlippedTime += TimeSpan.FromTicks((wall - _nowUs - MaxRealTimeLagUs) * 10);
-                wall = _nowUs + MaxRealTimeLagUs;
-            }
-
-            do
-            {
-                AdvanceTo(Math.Min(wall, _nowUs + 1000));
-                var m = TakeHostBytes(buffer);
-                if (m > 0)
-                {
-                    port.Write(buffer.AsSpan(0, m));
-                }
-            }
-            while (_nowUs < wall && !cancellationToken.IsCancellationRequested);
-        }
-    }
-
-    /// <summary>Wall-clock time the real-time simulation (<see cref="Serve"/>) fell behind and skipped.</summary>
-    public TimeSpan SlippedTime { get; private set; }
 
     /// <inheritdoc />
     public void Dispose()

@@ -25,6 +25,9 @@ struct rcfw_port {
     uint64_t tx_start_ns; /* last transmission window (RS-485 DE high) */
     uint64_t tx_end_ns;
     int32_t cut_remaining; /* < 0: disarmed */
+    uint8_t echo[RCFW_TX_MAX]; /* last transmission, heard by the other modules (half-duplex bus) */
+    uint16_t echo_len;         /* 0: already heard */
+    uint64_t echo_start_ns;
     uint64_t next_tick_us;
     uint8_t fram[RCFW_HOST_FRAM_SIZE];
     rcfw_module mod;
@@ -101,6 +104,9 @@ void rcfw_hal_uart_send(struct rcfw_port *p, const uint8_t *buf, uint16_t len, u
     }
     p->tx_start_ns = start;
     p->tx_end_ns = end;
+    memcpy(p->echo, buf, len);
+    p->echo_len = len;
+    p->echo_start_ns = start;
     if (bus->q_len + len > bus->q_cap) {
         int32_t cap = bus->q_cap * 2 + len + 256;
         timed_byte *nq = realloc(bus->q, (size_t)cap * sizeof *nq);
@@ -314,6 +320,35 @@ int32_t rcfw_advance_us(rcfw_bus *bus, uint32_t us)
 
 uint64_t rcfw_now_us(const rcfw_bus *bus) { return bus ? bus->now_us : 0u; }
 
+/* Every module hears what the others send (a chained SYNC/BULK READ reply waits for the previous one's
+ * status). Transmissions are delivered oldest first until nobody has anything left to be heard. */
+static void relay_transmissions(rcfw_bus *bus)
+{
+    uint64_t bn = byte_ns(bus->bps);
+    for (;;) {
+        struct rcfw_port *src = NULL;
+        for (int32_t i = 0; i < bus->n; i++) {
+            struct rcfw_port *p = &bus->ports[i];
+            if (p->echo_len != 0u && (!src || p->echo_start_ns < src->echo_start_ns)) {
+                src = p;
+            }
+        }
+        if (!src) {
+            return;
+        }
+        uint16_t len = src->echo_len;
+        src->echo_len = 0;
+        for (int32_t i = 0; i < bus->n; i++) {
+            struct rcfw_port *p = &bus->ports[i];
+            for (uint16_t k = 0; p != src && k < len && p->powered && p->uart_bps == bus->bps; k++) {
+                p->rx_end_ns = src->echo_start_ns + (uint64_t)(k + 1u) * bn;
+                rcfw_module_rx_byte(&p->mod, src->echo[k]);
+                after_bus_activity(p);
+            }
+        }
+    }
+}
+
 int32_t rcfw_bus_write(rcfw_bus *bus, const uint8_t *bytes, int32_t len)
 {
     if (!bus || len < 0 || (len > 0 && !bytes)) {
@@ -345,6 +380,7 @@ int32_t rcfw_bus_write(rcfw_bus *bus, const uint8_t *bytes, int32_t len)
     if (end > bus->host_busy_until_ns) {
         bus->host_busy_until_ns = end;
     }
+    relay_transmissions(bus);
     return RCFW_HOST_OK;
 }
 

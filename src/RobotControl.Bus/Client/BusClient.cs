@@ -9,7 +9,7 @@ namespace RobotControl.Bus.Client;
 /// per-cycle exchange, broadcast discovery and per-module statistics. Time comes from the given
 /// <see cref="TimeProvider"/>. After construction no request allocates. One thread uses a client at a time.
 /// </summary>
-public sealed class BusClient : IDisposable
+public sealed partial class BusClient : IDisposable
 {
     private const int MaxId = 252;
     private readonly IByteLink _link;
@@ -115,6 +115,28 @@ public sealed class BusClient : IDisposable
         if (reply.Outcome == ReplyOutcome.Ok)
         {
             _decoder.Parameters.CopyTo(data);
+        }
+
+        return reply;
+    }
+
+    /// <summary>
+    /// Reads the block <paramref name="start"/>..start + <paramref name="block"/>.Length of module <paramref name="id"/>
+    /// one mapped run (<see cref="ControlTable.MappedRuns"/>) at a time, since a read over unmapped bytes is refused;
+    /// unmapped bytes of <paramref name="block"/> are set to 0. Returns the first reply that did not succeed, or the last.
+    /// </summary>
+    public Reply ReadMapped(byte id, ControlTable table, int start, Span<byte> block)
+    {
+        ArgumentNullException.ThrowIfNull(table);
+        block.Clear();
+        var reply = new Reply(ReplyOutcome.Ok, 0);
+        foreach (var (address, length) in table.MappedRuns(start, start + block.Length))
+        {
+            reply = Read(id, (ushort)address, block.Slice(address - start, length));
+            if (!reply.Succeeded)
+            {
+                return reply;
+            }
         }
 
         return reply;

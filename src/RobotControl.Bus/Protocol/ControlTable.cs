@@ -47,6 +47,43 @@ public sealed class ControlTable
     public ControlTableField this[string name] =>
         _fields.TryGetValue(name, out var f) ? f : throw new KeyNotFoundException($"the firmware's control table has no field '{name}'");
 
+    /// <summary>
+    /// The runs of bytes in <paramref name="start"/>..<paramref name="end"/> (exclusive) that belong to a field, as
+    /// (address, length): a module refuses a read that covers an unmapped byte (access error).
+    /// </summary>
+    public IReadOnlyList<(int Address, int Length)> MappedRuns(int start, int end)
+    {
+        var mapped = new bool[TableSize];
+        foreach (var f in Fields)
+        {
+            for (var k = 0; k < f.Count; k++)
+            {
+                mapped.AsSpan(f.Address + (k * f.Stride), f.Size).Fill(true);
+            }
+        }
+
+        var runs = new List<(int, int)>();
+        for (var a = start; a < end;)
+        {
+            if (!mapped[a])
+            {
+                a++;
+                continue;
+            }
+
+            var b = a;
+            while (b < end && mapped[b])
+            {
+                b++;
+            }
+
+            runs.Add((a, b - a));
+            a = b;
+        }
+
+        return runs;
+    }
+
     /// <summary>True when the firmware defines <paramref name="name"/>.</summary>
     public bool Contains(string name) => _fields.ContainsKey(name);
 

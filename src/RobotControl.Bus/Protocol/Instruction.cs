@@ -12,13 +12,19 @@ public enum Instruction : byte
     /// <summary>Write bytes of the control table.</summary>
     Write = 0x03,
 
+    /// <summary>Register a write (checked, acknowledged) to be applied by <see cref="Action"/>.</summary>
+    RegWrite = 0x04,
+
+    /// <summary>Apply the registered write (broadcast: every module at once).</summary>
+    Action = 0x05,
+
     /// <summary>Restore the factory parameters.</summary>
     FactoryReset = 0x06,
 
     /// <summary>Restart the module.</summary>
     Reboot = 0x08,
 
-    /// <summary>Clear latched errors.</summary>
+    /// <summary>Clear (option 0x02 + key 44 58 4C 22: latched errors).</summary>
     Clear = 0x10,
 
     /// <summary>A status (reply) packet.</summary>
@@ -29,6 +35,18 @@ public enum Instruction : byte
 
     /// <summary>Write the same range of several modules in one packet (no reply).</summary>
     SyncWrite = 0x83,
+
+    /// <summary>Sync read answered by one combined status packet, each module adding its part.</summary>
+    FastSyncRead = 0x8A,
+
+    /// <summary>Read a different range from each listed module, each answering in turn.</summary>
+    BulkRead = 0x92,
+
+    /// <summary>Write a different range of each listed module in one packet (no reply).</summary>
+    BulkWrite = 0x93,
+
+    /// <summary>Bulk read answered by one combined status packet, each module adding its part.</summary>
+    FastBulkRead = 0x9A,
 }
 
 /// <summary>Well-known IDs and sizes of the framing.</summary>

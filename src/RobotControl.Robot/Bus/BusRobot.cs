@@ -56,6 +56,11 @@ public sealed class BusRobot : IRobotPort, IDisposable
     private RobotController[] _active = [];
     private byte[] _writeData = [];
     private FeedbackGroup[] _groups = [];
+    private byte[] _stateIds = [];
+    private int[] _stateLengths = [];
+    private byte[] _stateData = [];
+    private Reply[] _stateReplies = [];
+    private bool _fastReads;
     private byte[] _statusData = [];
     private Reply[] _statusReplies = [];
     private long _cycles;
@@ -257,10 +262,10 @@ public sealed class BusRobot : IRobotPort, IDisposable
         var block = new byte[end - start];
         foreach (var c in _active)
         {
-            var reply = _client.Read(c.Id, (ushort)start, block);
+            var reply = _client.ReadMapped(c.Id, _table, start, block);
             if (!reply.Succeeded)
             {
-                throw new IOException($"module {c.Id} \"{c.Name}\": reading its parameters failed ({reply.Outcome}, error 0x{reply.Error:X2})");
+                throw new IOException($"module {c.Id} \"{c.Name}\": reading its parameters failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)})");
             }
 
             foreach (var p in ModuleParameters.For(Definition, c.Definition, _table))
@@ -291,7 +296,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
                 var reply = _client.Write(c.Id, p.Address, value[..p.Field.Size]);
                 if (!reply.Succeeded)
                 {
-                    throw new IOException($"module {c.Id} \"{c.Name}\": writing {p} failed ({reply.Outcome}, error 0x{reply.Error:X2})");
+                    throw new IOException($"module {c.Id} \"{c.Name}\": writing {p} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)})");
                 }
 
                 count++;
@@ -311,7 +316,8 @@ public sealed class BusRobot : IRobotPort, IDisposable
         var reply = _client.Write(moduleId, f.At(motor), bytes[..f.Size]);
         if (!reply.Succeeded)
         {
-            throw new IOException($"module {moduleId}: writing {field}[{motor}] = {value} failed ({reply.Outcome}, error 0x{reply.Error:X2})");
+            var locked = f.Persistent && StatusErrors.Number(reply.Error) == StatusError.Access ? ": the persistent area is locked while torque is on, turn torque off first" : string.Empty;
+            throw new IOException($"module {moduleId}: writing {field}[{motor}] = {value} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)}){locked}");
         }
 
         var back = ReadParameter(moduleId, field, motor);
@@ -364,7 +370,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
     {
         var (start, end) = _table.PersistentArea;
         var block = new byte[end - start];
-        if (!_client.Read(c.Id, (ushort)start, block).Succeeded)
+        if (!_client.ReadMapped(c.Id, _table, start, block).Succeeded)
         {
             foreach (var m in c.Motors)
             {
@@ -423,7 +429,7 @@ public sealed class BusRobot : IRobotPort, IDisposable
 
         if (!request.Succeeded)
         {
-            return Result(HomingOutcome.Refused, $"the module refused the home request (status error 0x{request.Error & 0x7F:X2}{((request.Error & 0x7F) == 1 ? ", result fail" : string.Empty)}): is torque on in the module, or a pot calibration missing?");
+            return Result(HomingOutcome.Refused, $"the module refused the home request (status error {StatusErrors.Describe(request.Error)}): is torque on in the module, or a pot calibration missing?");
         }
 
         if (!hasRaw || !hasPosition || errors is null)
@@ -562,12 +568,9 @@ public sealed class BusRobot : IRobotPort, IDisposable
 
             _client.SyncWrite(_goalAddress, _goalLength, ids, _writeData);
 
-            // One sync read per feedback length: the modules' reply slots are sized by the length, so modules with
-            // fewer motors read less and wait less.
-            foreach (var g in _groups)
-            {
-                _client.SyncRead(_feedbackAddress, g.Length, g.Ids, g.Data, g.Replies);
-            }
+            // One FAST BULK READ of every module's feedback (its own length) when all modules can answer it, else one
+            // sync read per feedback length.
+            _client.FullStateRead(_feedbackAddress, _stateIds, _stateLengths, _stateData, _stateReplies, _fastReads);
 
             ProcessFeedback();
         }
@@ -993,11 +996,21 @@ public sealed class BusRobot : IRobotPort, IDisposable
         _active = _controllers.Where(c => c.Present).ToArray();
         _ids = _active.Select(c => c.Id).ToArray();
         _writeData = new byte[_ids.Length * _goalLength];
-        _groups = _active.GroupBy(c => c.ChannelSpan).OrderByDescending(g => g.Key).Select(g =>
+        // Modules grouped by feedback length; the groups' buffers are consecutive slices of the full-state read's.
+        var ordered = _active.GroupBy(c => c.ChannelSpan).OrderByDescending(g => g.Key).SelectMany(g => g).ToArray();
+        _stateIds = ordered.Select(c => c.Id).ToArray();
+        _stateLengths = ordered.Select(c => c.ChannelSpan * _feedbackStride).ToArray();
+        _stateData = new byte[_stateLengths.Sum()];
+        _stateReplies = new Reply[ordered.Length];
+        _fastReads = ordered.All(c => c.FirmwareVersion >= BusClient.FastReadFirmwareVersion);
+        var (module, offset) = (0, 0);
+        _groups = ordered.GroupBy(c => c.ChannelSpan).Select(g =>
         {
             var members = g.ToArray();
             var length = g.Key * _feedbackStride;
-            return new FeedbackGroup(members, members.Select(c => c.Id).ToArray(), length, new byte[members.Length * length], new Reply[members.Length]);
+            var group = new FeedbackGroup(members, members.Select(c => c.Id).ToArray(), length, new ArraySegment<byte>(_stateData, offset, members.Length * length), new ArraySegment<Reply>(_stateReplies, module, members.Length));
+            (module, offset) = (module + members.Length, offset + (members.Length * length));
+            return group;
         }).ToArray();
         _statusData = new byte[_ids.Length * 2];
         _statusReplies = new Reply[_ids.Length];
@@ -1068,5 +1081,5 @@ public sealed class BusRobot : IRobotPort, IDisposable
         return -1;
     }
 
-    private sealed record FeedbackGroup(RobotController[] Controllers, byte[] Ids, int Length, byte[] Data, Reply[] Replies);
+    private sealed record FeedbackGroup(RobotController[] Controllers, byte[] Ids, int Length, ArraySegment<byte> Data, ArraySegment<Reply> Replies);
 }

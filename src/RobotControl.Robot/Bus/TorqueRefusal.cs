@@ -1,4 +1,5 @@
 using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
 
 namespace RobotControl.Robot.Bus;
 
@@ -18,14 +19,14 @@ internal static class TorqueRefusal
     /// <param name="status">hardware_error_status and reset_cause, or null when they could not be read.</param>
     public static string Describe(byte id, string name, bool on, Reply torque, Reply watchdog, (HardwareErrors Errors, byte ResetCause)? status)
     {
-        var replies = $"torque {torque.Outcome} 0x{torque.Error:X2}, watchdog {watchdog.Outcome} 0x{watchdog.Error:X2}";
+        var replies = $"torque {torque.Outcome} {StatusErrors.Describe(torque.Error)}, watchdog {watchdog.Outcome} {StatusErrors.Describe(watchdog.Error)}";
         var cause = status switch
         {
             { Errors: var e } when e.HasFlag(HardwareErrors.BusWatchdog) => $"its bus watchdog error is latched ({e}, reset cause {status.Value.ResetCause}): clear the module's errors first",
             { Errors: not HardwareErrors.None and var e } => $"it reports latched errors {e} (reset cause {status.Value.ResetCause}): clear them first",
             null when torque.Outcome != ReplyOutcome.Ok && watchdog.Outcome != ReplyOutcome.Ok => "the module does not answer",
             null => "its status could not be read",
-            _ => $"the module refused the write (status error 0x{(torque.Succeeded ? watchdog.Error : torque.Error):X2}) without a latched error",
+            _ => $"the module refused the write ({StatusErrors.Describe(torque.Succeeded ? watchdog.Error : torque.Error)}) without a latched error",
         };
         return $"module {id} \"{name}\": torque {(on ? "on" : "off")} refused ({replies}); {cause}";
     }

@@ -55,6 +55,13 @@ public sealed class BusRobotTests
         Assert.Empty(lb.Robot.CheckParameters());
 
         var kp = lb.Robot.ReadParameter(2, "kp", 0);
+
+        // The persistent area is locked while a motor is driven (access error), as Dynamixel locks its EEPROM area.
+        var locked = Assert.Throws<IOException>(() => lb.Robot.WriteParameter(2, "kp", 0, kp + 7));
+        Assert.Contains("0x07 access error", locked.Message, StringComparison.Ordinal);
+        Assert.Contains("torque", locked.Message, StringComparison.Ordinal);
+        Assert.Equal(kp, lb.Robot.ReadParameter(2, "kp", 0));
+        lb.Robot.EnableTorque(false);
         Assert.Equal(kp + 7, lb.Robot.WriteParameter(2, "kp", 0, kp + 7));
         lb.Sim.PowerCycle(2);
         lb.Sim.Advance(TimeSpan.FromMilliseconds(2));

@@ -11,11 +11,18 @@
 #define RCFW_INST_PING 0x01u
 #define RCFW_INST_READ 0x02u
 #define RCFW_INST_WRITE 0x03u
+#define RCFW_INST_REG_WRITE 0x04u
+#define RCFW_INST_ACTION 0x05u
 #define RCFW_INST_FACTORY_RESET 0x06u
 #define RCFW_INST_REBOOT 0x08u
+#define RCFW_INST_CLEAR 0x10u
 #define RCFW_INST_STATUS 0x55u
 #define RCFW_INST_SYNC_READ 0x82u
 #define RCFW_INST_SYNC_WRITE 0x83u
+#define RCFW_INST_FAST_SYNC_READ 0x8Au
+#define RCFW_INST_BULK_READ 0x92u
+#define RCFW_INST_BULK_WRITE 0x93u
+#define RCFW_INST_FAST_BULK_READ 0x9Au
 
 /* status error byte (low 7 bits = Dynamixel error number, bit 7 = hardware alert) */
 #define RCFW_ERR_RESULT_FAIL 0x01u

@@ -11,7 +11,6 @@
 #include "rcfw_ct_gen.h"
 
 #define RCFW_CONTROL_RATE_HZ 10000u
-#define RCFW_FIRMWARE_VERSION 1u
 #define RCFW_RX_TIMEOUT_TICKS 20u   /* 2 ms of silence inside a frame drops it */
 #define RCFW_RUNTIME_SAVE_TICKS 10u /* position/goal record at most every 1 ms */
 
@@ -71,6 +70,19 @@ typedef struct rcfw_module {
     rcfw_store runtime;
     uint8_t runtime_saved[RCFW_RUNTIME_LEN];
     rcfw_parser rx;
+    /* REG WRITE waiting for ACTION (reg_len 0: none) */
+    uint16_t reg_addr;
+    uint16_t reg_len;
+    uint8_t reg_data[RCFW_CT_SIZE];
+    /* SYNC/BULK READ reply built in tx, sent once chain_prev's status has been heard (chain_len 0: none) */
+    uint8_t chain_prev;
+    uint16_t chain_len;
+    /* FAST SYNC/BULK READ part in tx, sent when the packet reaches fast_at bytes (fast_len 0: none) */
+    uint16_t fast_len;
+    uint16_t fast_at;
+    uint16_t fast_pos;
+    uint16_t fast_crc;
+    uint16_t fast_total; /* LEN of the combined packet */
     uint8_t body[RCFW_CT_SIZE + 8u];
     uint8_t tx[RCFW_TX_MAX];
     rcfw_stats stats;

@@ -135,6 +135,12 @@ public sealed unsafe class PseudoTerminal : IByteLink
     }
 
     /// <summary>
+    /// The baud the client set on its end of the pty: what a real line would run at. A simulator serving the pty follows
+    /// it (only modules at that baud hear and are heard).
+    /// </summary>
+    public int ClientBaud => (int)SlaveOutputSpeed();
+
+    /// <summary>
     /// The output speed the client last set on the slave (termios2 <c>c_ospeed</c>), read through the slave end this
     /// object holds: the client's port may be exclusive (TIOCEXCL), so a second open could fail.
     /// </summary>

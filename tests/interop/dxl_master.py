@@ -1,0 +1,217 @@
+#!/usr/bin/env python3
+"""Independent Dynamixel Protocol 2.0 master (Python 3 standard library only), written from the published
+protocol, not from this code base. It talks to a bus on a serial device (e.g. the pty of `robotctl bus-sim --pty`)
+and checks that every instruction answers as the protocol says, that each error case gets its protocol error code,
+and that no command is silently dropped.
+
+usage: dxl_master.py /dev/pts/N      (the modules at 1 Mbaud, their factory baud)
+Exit status 0 when every check passed; one line per check on stdout."""
+import os
+import select
+import struct
+import sys
+import termios
+import time
+
+# Control-table addresses (docs/protocol.md): the Dynamixel-standard ones and the module's feedback block.
+MODEL, FW, ID, RDELAY = 0, 6, 7, 9
+KP, POS_MAX = 20, 32
+TORQUE, GOAL, PRESENT = 224, 232, 248
+CLEAR_KEY = bytes([0x44, 0x58, 0x4C, 0x22])
+
+
+def crc16(data, crc=0):
+    """CRC-16 of the protocol: polynomial 0x8005, initial value 0, MSB first."""
+    for b in data:
+        crc ^= b << 8
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x8005) & 0xFFFF if crc & 0x8000 else (crc << 1) & 0xFFFF
+    return crc
+
+
+def stuff(body):
+    out = bytearray()
+    for i, b in enumerate(body):
+        out.append(b)
+        if b == 0xFD and i >= 2 and body[i - 1] == 0xFF and body[i - 2] == 0xFF:
+            out.append(0xFD)
+    return bytes(out)
+
+
+def packet(ident, inst, params=b""):
+    body = stuff(bytes([inst]) + params)
+    head = bytes([0xFF, 0xFF, 0xFD, 0x00, ident]) + struct.pack("<H", len(body) + 2) + body
+    return head + struct.pack("<H", crc16(head))
+
+
+class Bus:
+    def __init__(self, path):
+        self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
+        attrs = termios.tcgetattr(self.fd)
+        attrs[0] = attrs[1] = attrs[3] = 0  # raw: no input/output/local processing
+        attrs[2] = termios.CS8 | termios.CREAD | termios.CLOCAL
+        attrs[4] = attrs[5] = termios.B1000000  # the modules' factory baud
+        attrs[6][termios.VMIN] = 0
+        attrs[6][termios.VTIME] = 0
+        termios.tcsetattr(self.fd, termios.TCSANOW, attrs)
+        self.buf = bytearray()
+
+    def send(self, ident, inst, params=b""):
+        self.drain()
+        os.write(self.fd, packet(ident, inst, params))
+
+    def drain(self):
+        while select.select([self.fd], [], [], 0.02)[0]:
+            if not os.read(self.fd, 4096):
+                break
+        self.buf.clear()
+
+    def fill(self, deadline):
+        left = deadline - time.monotonic()
+        if left > 0 and select.select([self.fd], [], [], left)[0]:
+            self.buf += os.read(self.fd, 4096)
+            return True
+        return False
+
+    def status(self, timeout=0.5):
+        """Next status packet: (id, error, data), or None on timeout. Unstuffs; drops bad CRCs."""
+        deadline = time.monotonic() + timeout
+        while True:
+            at = self.buf.find(b"\xFF\xFF\xFD\x00")
+            if at >= 0 and len(self.buf) >= at + 7:
+                length = struct.unpack_from("<H", self.buf, at + 5)[0]
+                end = at + 7 + length
+                if len(self.buf) >= end:
+                    raw = bytes(self.buf[at:end])
+                    del self.buf[:end]
+                    if crc16(raw[:-2]) != struct.unpack_from("<H", raw, len(raw) - 2)[0]:
+                        continue
+                    body = raw[7:-2].replace(b"\xFF\xFF\xFD\xFD", b"\xFF\xFF\xFD")
+                    if body[0] != 0x55:
+                        continue
+                    return raw[4], body[1], body[2:]
+            if not self.fill(deadline):
+                return None
+
+    def raw(self, count, timeout=0.5):
+        deadline = time.monotonic() + timeout
+        while len(self.buf) < count and self.fill(deadline):
+            pass
+        out = bytes(self.buf[:count])
+        del self.buf[:count]
+        return out
+
+
+class Checks:
+    def __init__(self):
+        self.failed = 0
+
+    def check(self, name, ok, detail=""):
+        print("%s %s%s" % ("ok  " if ok else "FAIL", name, "" if ok else ": " + detail))
+        self.failed += 0 if ok else 1
+
+
+def rd(a, n):
+    return struct.pack("<HH", a, n)
+
+
+def wr(a, data):
+    return struct.pack("<H", a) + data
+
+
+def main():
+    path = sys.argv[1]
+    bus, c = Bus(path), Checks()
+
+    # Broadcast ping: every module answers.
+    bus.send(0xFE, 0x01)
+    found = []
+    while True:
+        st = bus.status(0.3)
+        if st is None:
+            break
+        found.append(st)
+    c.check("broadcast ping answered", len(found) >= 2, "%d modules" % len(found))
+    ids = sorted(s[0] for s in found)
+    a, b = ids[0], ids[1]
+    model = struct.unpack("<H", found[0][2][:2])[0]
+
+    def ask(ident, inst, params=b""):
+        bus.send(ident, inst, params)
+        return bus.status()
+
+    def expect(name, ident, inst, params, error, data=None):
+        st = ask(ident, inst, params)
+        ok = st is not None and st[0] == ident and st[1] & 0x7F == error and (data is None or st[2] == data)
+        c.check(name, ok, "got %r, expected error 0x%02X" % (st, error))
+        return st
+
+    st = expect("ping", a, 0x01, b"", 0)
+    expect("read model number", a, 0x02, rd(MODEL, 2), 0, struct.pack("<H", model))
+    # Error codes, as the protocol defines them.
+    expect("0x02 undefined instruction", a, 0x20, b"", 0x02)
+    expect("0x04 value out of range (id 253)", a, 0x03, wr(ID, b"\xFD"), 0x04)
+    expect("0x05 write shorter than the field", a, 0x03, wr(KP, b"\x01"), 0x05)
+    expect("0x05 read with missing parameters", a, 0x02, b"\x00\x00\x02", 0x05)
+    pmax = struct.unpack("<i", expect("read position_max", a, 0x02, rd(POS_MAX, 4), 0)[2])[0]
+    expect("0x06 goal beyond the configured limit", a, 0x03, wr(GOAL, struct.pack("<i", pmax + 1)), 0x06)
+    expect("0x07 write to a read-only field", a, 0x03, wr(MODEL, b"\x00\x00"), 0x07)
+    expect("0x07 read of an unmapped byte", a, 0x02, rd(3, 1), 0x07)
+    expect("0x07 read past the table", a, 0x02, rd(0xFFF0, 4), 0x07)
+    delay = expect("read return delay", a, 0x02, rd(RDELAY, 1), 0)[2]
+    expect("torque on", a, 0x03, wr(TORQUE, b"\x01"), 0)
+    expect("0x07 persistent-area write while torque is on", a, 0x03, wr(RDELAY, delay), 0x07)
+    expect("torque off", a, 0x03, wr(TORQUE, b"\x00"), 0)
+    expect("persistent-area write with torque off", a, 0x03, wr(RDELAY, delay), 0)
+
+    # REG WRITE + ACTION: registered, not applied, then applied.
+    goal = expect("read goal", a, 0x02, rd(GOAL, 4), 0)[2]
+    new_goal = struct.pack("<i", struct.unpack("<i", goal)[0] + 3)
+    expect("reg write", a, 0x04, wr(GOAL, new_goal), 0)
+    expect("reg write not applied yet", a, 0x02, rd(GOAL, 4), 0, goal)
+    expect("action", a, 0x05, b"", 0)
+    expect("action applied the registered write", a, 0x02, rd(GOAL, 4), 0, new_goal)
+    expect("action with nothing registered: result fail", a, 0x05, b"", 0x01)
+    expect("clear errors", a, 0x10, b"\x02" + CLEAR_KEY, 0)
+    expect("clear multi-turn does not apply: result fail", a, 0x10, b"\x01" + CLEAR_KEY, 0x01)
+    expect("clear with a wrong key: data range", a, 0x10, b"\x02\x00\x00\x00\x00", 0x04)
+
+    # BULK WRITE is applied (never silently dropped), BULK READ answers in list order.
+    goal_b = expect("read goal (second module)", b, 0x02, rd(GOAL, 4), 0)[2]
+    ga = struct.pack("<i", struct.unpack("<i", new_goal)[0] - 1)
+    gb = struct.pack("<i", struct.unpack("<i", goal_b)[0] + 1)
+    bus.send(0xFE, 0x93, bytes([a]) + rd(GOAL, 4) + ga + bytes([b]) + rd(GOAL, 4) + gb)
+    c.check("bulk write: no reply", bus.status(0.1) is None)
+    expect("bulk write applied (first module)", a, 0x02, rd(GOAL, 4), 0, ga)
+    expect("bulk write applied (second module)", b, 0x02, rd(GOAL, 4), 0, gb)
+    bus.send(0xFE, 0x92, bytes([b]) + rd(GOAL, 4) + bytes([a]) + rd(MODEL, 2))
+    r1, r2 = bus.status(), bus.status()
+    c.check("bulk read answers in list order", r1 is not None and r2 is not None and (r1[0], r2[0]) == (b, a)
+            and r1[2] == gb and r2[2] == struct.pack("<H", model), "%r %r" % (r1, r2))
+    bus.send(0xFE, 0x82, rd(PRESENT, 8) + bytes(ids))
+    got = [bus.status() for _ in ids]
+    c.check("sync read: every module, in list order", [g[0] if g else None for g in got] == ids, repr(got))
+
+    # FAST SYNC READ / FAST BULK READ: one packet from ID 0xFE, a CRC after every module's part.
+    for name, inst, params, lengths in (
+            ("fast sync read", 0x8A, rd(GOAL, 4) + bytes([a, b]), [4, 4]),
+            ("fast bulk read", 0x9A, bytes([a]) + rd(GOAL, 4) + bytes([b]) + rd(MODEL, 2), [4, 2])):
+        bus.send(0xFE, inst, params)
+        size = 8 + sum(4 + n for n in lengths)
+        pk = bus.raw(size)
+        ok = len(pk) == size and pk[:5] == b"\xFF\xFF\xFD\x00\xFE" and pk[7] == 0x55
+        ok = ok and struct.unpack_from("<H", pk, 5)[0] == size - 7
+        at = 8
+        for ident, n in zip((a, b), lengths):
+            ok = ok and pk[at] & 0x7F == 0 and pk[at + 1] == ident
+            ok = ok and crc16(pk[:at + 2 + n]) == struct.unpack_from("<H", pk, at + 2 + n)[0]
+            at += 4 + n
+        c.check(name + ": one packet, each part with its CRC", ok, pk.hex(" "))
+        c.check(name + ": data", ok and pk[10:14] == ga, pk.hex(" "))
+
+    print("%d failed" % c.failed)
+    return 1 if c.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
