@@ -92,12 +92,10 @@ public sealed class SdkPackagingTests : IDisposable
 
         // 6. robotctl run --plugins: the filter wired between scaling and clutch of the right arm, every signal recorded.
         var graph = WriteTeleopGraphWithFilter(repo, Path.Combine(_dir, "graph"));
-        var output = new StringWriter();
-        var error = new StringWriter();
-        var code = RunCommand.Run(graph, isVirtual: true, "2s", Path.Combine(_dir, "graph", "report.json"), null, plugins, 1, output, error);
-        Assert.Equal(refusal, error.ToString().TrimEnd());
-        Assert.True(code == 0, output.ToString());
-        Assert.Contains("summary: 2000 ticks", output.ToString(), StringComparison.Ordinal);
+        var (code, output, error) = Cli.Run("run", graph, "--virtual", "--duration", "2s", "--report", Path.Combine(_dir, "graph", "report.json"), "--plugins", plugins);
+        Assert.Equal(refusal, error.TrimEnd());
+        Assert.True(code == 0, output);
+        Assert.Contains("summary: 2000 ticks", output, StringComparison.Ordinal);
 
         var rows = File.ReadAllLines(Path.Combine(_dir, "graph", "signals.csv"));
         var header = rows[0].Split(',');
