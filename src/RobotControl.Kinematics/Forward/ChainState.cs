@@ -4,7 +4,7 @@ namespace RobotControl.Kinematics.Forward;
 
 /// <summary>
 /// The frames of a <see cref="KinematicChain"/> for one joint vector, computed by the forward recursion
-/// (docs: shared spec, algorithms.md). Frame 0 is the base; frame i+1 follows DH row i. Not thread-safe; allocates
+/// (docs/algorithms.md). Frame 0 is the base; frame i+1 follows DH row i. Not thread-safe; allocates
 /// nothing after construction.
 /// </summary>
 public sealed class ChainState
