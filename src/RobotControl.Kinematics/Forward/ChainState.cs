@@ -43,9 +43,6 @@ public sealed class ChainState
     /// <summary>Origin of frame <paramref name="frame"/> (0 = base).</summary>
     public Vector3d Origin(int frame) => _p[frame];
 
-    /// <summary>Z axis of frame <paramref name="frame"/>.</summary>
-    public Vector3d AxisZ(int frame) => _z[frame];
-
     /// <summary>Orientation of frame <paramref name="frame"/>.</summary>
     public Rotation3d Rotation(int frame) => new(_x[frame], _y[frame], _z[frame]);
 

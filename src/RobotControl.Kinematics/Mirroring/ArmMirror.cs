@@ -87,9 +87,6 @@ public sealed class ArmMirror
     /// <summary>Mirrors an orientation in this mirror's plane (a proper rotation, see the class remarks).</summary>
     public Rotation3d MirrorRotation(Rotation3d rotation) => Reflect(rotation, Normal);
 
-    /// <summary>Mirrors a pose in this mirror's plane, e.g. an input device's pose for the left arm.</summary>
-    public Pose MirrorPose(Pose pose) => Reflect(pose, Normal);
-
     /// <summary>
     /// A point in the body frame as the target of the right-arm model: relative to the arm's base and, for the
     /// mirrored arm, reflected.

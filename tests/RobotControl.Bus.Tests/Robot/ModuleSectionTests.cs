@@ -32,7 +32,7 @@ public sealed class ModuleSectionTests
         layout[5]!["motors"]![0]!["speed_limit_deg_s"] = null;
 
         var ex = Assert.Throws<RobotDataException>(() => RobotLoader.LoadFromText(json.ToJsonString(), RepoPaths.Robot("bad.json")));
-        var paths = ex.Errors.Select(e => e.JsonPath).ToArray();
+        var paths = ex.Errors.Select(e => e.Path).ToArray();
         Assert.Contains("$.modules.layout[1].id", paths);
         Assert.Contains("$.modules.layout[2].arm", paths);
         Assert.Contains("$.modules.layout[0].motors[1].actuator", paths);
