@@ -1,9 +1,9 @@
 using RobotControl.Plugins.Sdk;
 
-namespace RobotControl.Runtime.Tests.Support;
+namespace RobotControl.TestSupport;
 
 /// <summary>Drives one plug-in by hand: set inputs by name, tick, read outputs by name.</summary>
-internal sealed class PluginDriver(Plugin plugin)
+public sealed class PluginDriver(Plugin plugin)
 {
     private long _tick;
 

@@ -1,20 +1,17 @@
 using RobotControl.Bus.Client;
-using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
 
-namespace RobotControl.Bus.Tests.Support;
+namespace RobotControl.TestSupport;
 
 /// <summary>A virtual LB-1.0 and the robot layer on it, on a manual clock.</summary>
-internal sealed class VirtualLb : IDisposable
+public sealed class VirtualLb : IDisposable
 {
-    private static readonly Lazy<RobotDefinition> s_lb = new(() => RobotLoader.Load(RepoPaths.Robot("lb-1.0.json")));
-
     public VirtualLb(VirtualRobotOptions? options = null, RobotDefinition? hostView = null, bool start = true)
     {
-        Definition = s_lb.Value;
+        Definition = ShippedRobots.Lb;
         Clock = new ManualTimeProvider();
         Sim = new VirtualRobot(Definition, Clock, options);
         Robot = new BusRobot(hostView ?? Definition, new BusClient(Sim.OpenLink(), Clock));
@@ -25,7 +22,7 @@ internal sealed class VirtualLb : IDisposable
         }
     }
 
-    public static RobotDefinition Lb => s_lb.Value;
+    public static RobotDefinition Lb => ShippedRobots.Lb;
 
     public RobotDefinition Definition { get; }
 

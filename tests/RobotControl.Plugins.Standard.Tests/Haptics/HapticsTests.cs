@@ -5,9 +5,9 @@ using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Standard.Haptics;
 using RobotControl.Plugins.Standard.Kinematics;
 using RobotControl.Runtime.Graph;
-using RobotControl.Runtime.Tests.Support;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Runtime.Tests.Plugins;
+namespace RobotControl.Plugins.Standard.Tests.Haptics;
 
 public sealed class HapticsTests
 {
@@ -36,7 +36,7 @@ public sealed class HapticsTests
 
     private static (GraphProgram Program, DevicePoint Device, InverseKinematicsPlugin Ik, HapticWallsPlugin Walls) Chain(bool mirror)
     {
-        var context = (string name) => PluginContext.Standalone(name, Repo.Lb);
+        var context = (string name) => PluginContext.Standalone(name, ShippedRobots.Lb);
         var homing = Homing with { Mirror = mirror };
         var device = new DevicePoint();
         var ik = new InverseKinematicsPlugin(new InverseKinematicsSettings { InitialJointsDeg = "-30,-30,0,90,0" }, context("ik"));
@@ -140,8 +140,8 @@ public sealed class HapticsTests
     [Fact]
     public void Inverse_kinematics_outputs_joints_whose_forward_kinematics_reach_the_target()
     {
-        var ik = new PluginDriver(new InverseKinematicsPlugin(new InverseKinematicsSettings { InitialJointsDeg = "-30,-30,0,90,0" }, PluginContext.Standalone("ik", Repo.Lb)));
-        var chain = new KinematicChain(Repo.Lb);
+        var ik = new PluginDriver(new InverseKinematicsPlugin(new InverseKinematicsSettings { InitialJointsDeg = "-30,-30,0,90,0" }, PluginContext.Standalone("ik", ShippedRobots.Lb)));
+        var chain = new KinematicChain(ShippedRobots.Lb);
         var state = chain.CreateState();
 
         ik.Set(("x", 100), ("y", 40), ("z", -50)).Tick();

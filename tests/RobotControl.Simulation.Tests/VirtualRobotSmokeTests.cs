@@ -1,18 +1,18 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Bus.Tests.Support;
 using RobotControl.Hardware.Loading;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Bus.Tests.Simulation;
+namespace RobotControl.Simulation.Tests;
 
 public sealed class VirtualRobotSmokeTests
 {
     [Fact]
     public void Modules_answer_and_report_the_pot_homed_positions()
     {
-        var robot = RobotLoader.Load(RepoPaths.Robot("lb-1.0.json"));
+        var robot = RobotLoader.Load(RepositoryPaths.Robot("lb-1.0.json"));
         var clock = new ManualTimeProvider();
         using var sim = new VirtualRobot(robot, clock);
         using var client = new BusClient(sim.OpenLink(), clock);

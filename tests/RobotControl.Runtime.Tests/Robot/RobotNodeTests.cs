@@ -3,8 +3,9 @@ using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Robot;
 using RobotControl.Runtime.Tests.Support;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Runtime.Tests.Plugins;
+namespace RobotControl.Runtime.Tests.Robot;
 
 public sealed class RobotNodeTests
 {

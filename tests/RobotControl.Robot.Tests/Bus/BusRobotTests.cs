@@ -1,11 +1,11 @@
 using System.Text.Json.Nodes;
-using RobotControl.Bus.Tests.Support;
 using RobotControl.Hardware.Loading;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
 using RobotControl.Simulation;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Bus.Tests.Robot;
+namespace RobotControl.Robot.Tests.Bus;
 
 public sealed class BusRobotTests
 {
@@ -28,7 +28,7 @@ public sealed class BusRobotTests
     public void Missing_and_unknown_modules_are_reported()
     {
         // The host's robot file moves the left forearm to ID 20 (not on the bus) and forgets the right forearm (ID 3).
-        var json = JsonNode.Parse(File.ReadAllText(RepoPaths.Robot("lb-1.0.json")))!;
+        var json = JsonNode.Parse(File.ReadAllText(RepositoryPaths.Robot("lb-1.0.json")))!;
         var layout = json["modules"]!["layout"]!.AsArray();
         layout.RemoveAt(2);
         foreach (var m in layout)
@@ -39,7 +39,7 @@ public sealed class BusRobotTests
             }
         }
 
-        var hostView = RobotLoader.LoadFromText(json.ToJsonString(), RepoPaths.Robot("edited.json"));
+        var hostView = RobotLoader.LoadFromText(json.ToJsonString(), RepositoryPaths.Robot("edited.json"));
         using var lb = new VirtualLb(hostView: hostView);
         var report = lb.Discovery!;
         Assert.Equal([20], report.Missing.Select(c => (int)c.Id));

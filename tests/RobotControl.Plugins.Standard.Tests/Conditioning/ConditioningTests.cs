@@ -1,8 +1,8 @@
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Standard.Conditioning;
-using RobotControl.Runtime.Tests.Support;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Runtime.Tests.Plugins;
+namespace RobotControl.Plugins.Standard.Tests.Conditioning;
 
 public sealed class ConditioningTests
 {

@@ -1,11 +1,11 @@
 using System.Buffers.Binary;
 using RobotControl.Bus.Protocol;
-using RobotControl.Bus.Tests.Support;
 using RobotControl.Robot.Control;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Bus;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Bus.Tests.Robot;
+namespace RobotControl.Robot.Tests.Bus;
 
 public sealed class FaultTests
 {

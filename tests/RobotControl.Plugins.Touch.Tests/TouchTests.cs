@@ -2,9 +2,9 @@ using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Touch;
 using RobotControl.Plugins.Touch.Backends;
 using RobotControl.Plugins.Touch.Simulation;
-using RobotControl.Runtime.Tests.Support;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Runtime.Tests.Plugins;
+namespace RobotControl.Plugins.Touch.Tests;
 
 public sealed class TouchTests
 {

@@ -1,6 +1,6 @@
 using RobotControl.Plugins.Sdk.Sampling;
 
-namespace RobotControl.Runtime.Tests.Sdk;
+namespace RobotControl.Plugins.Sdk.Tests.Sampling;
 
 public sealed class SampleTimesTests
 {

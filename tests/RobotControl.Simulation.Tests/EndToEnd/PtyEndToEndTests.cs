@@ -1,13 +1,13 @@
 using System.Diagnostics;
 using RobotControl.Bus.Client;
-using RobotControl.Bus.Tests.Support;
 using RobotControl.Bus.Transports;
 using RobotControl.Bus.Transports.Serial;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Bus.Tests.EndToEnd;
+namespace RobotControl.Simulation.Tests.EndToEnd;
 
 /// <summary>
 /// A virtual robot served on a pseudo-terminal in real time, driven through the serial transport like a USB-RS485

@@ -1,9 +1,9 @@
 using RobotControl.Bus.Protocol;
-using RobotControl.Bus.Tests.Support;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Bus.Tests.Robot;
+namespace RobotControl.Robot.Tests.Bus;
 
 /// <summary>Homing from the joint pots through the firmware's home_request, on modules that already have a position record.</summary>
 public sealed class HomingTests

@@ -1,9 +1,9 @@
 using RobotControl.Plugins.Sdk;
 using RobotControl.Runtime.Graph;
 
-namespace RobotControl.Runtime.Tests.Support;
+namespace RobotControl.TestSupport;
 
-internal static class Ticks
+public static class Ticks
 {
     public static TickContext At(long index) =>
         new(index, index * TimeSpan.TicksPerMillisecond, TimeSpan.FromMilliseconds(index), TimeSpan.FromMilliseconds(1));
