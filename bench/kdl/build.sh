@@ -1,5 +1,5 @@
 #!/bin/sh
-# Builds the KDL side of the ik benchmark: bench/kdl/kdl_ik from kdl_ik.cpp against Debian's liborocos-kdl-dev.
+# Builds the KDL side of the ik benchmark: the kdl_ik program from bench/kdl/kdl_ik.cpp against Debian's liborocos-kdl-dev.
 # Usage: build.sh [output-directory]   (default: this directory). Exit 3 when KDL's headers or library are missing.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)

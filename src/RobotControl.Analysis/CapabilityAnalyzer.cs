@@ -8,7 +8,7 @@ using RobotControl.Hardware.Model;
 namespace RobotControl.Analysis;
 
 /// <summary>
-/// Runs a capability analysis of one robot (shared spec, algorithms.md, capability analysis): drivetrain figures,
+/// Runs a capability analysis of one robot (docs/algorithms.md, capability analysis): drivetrain figures,
 /// the two-joint sweep (manipulability, velocity, force; reference method and optionally coupling-aware),
 /// requirement fractions, workspace volumes and current limits.
 /// </summary>

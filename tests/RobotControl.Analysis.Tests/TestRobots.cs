@@ -1,26 +1,14 @@
-using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
+using RobotControl.TestSupport;
 
 namespace RobotControl.Analysis.Tests;
 
-/// <summary>The repository's robot files, loaded once.</summary>
+/// <summary>The repository's robot files, loaded once (by <see cref="ShippedRobots"/>).</summary>
 internal static class TestRobots
 {
-    private static readonly Lazy<RobotDefinition> CrbRobot = new(() => RobotLoader.Load(PathOf("crb-1.0.json")));
-    private static readonly Lazy<RobotDefinition> LbRobot = new(() => RobotLoader.Load(PathOf("lb-1.0.json")));
+    public static RobotDefinition Crb => ShippedRobots.Crb;
 
-    public static RobotDefinition Crb => CrbRobot.Value;
+    public static RobotDefinition Lb => ShippedRobots.Lb;
 
-    public static RobotDefinition Lb => LbRobot.Value;
-
-    public static string PathOf(string file)
-    {
-        var dir = new DirectoryInfo(AppContext.BaseDirectory);
-        while (dir is not null && !Directory.Exists(Path.Combine(dir.FullName, "hardware", "robots")))
-        {
-            dir = dir.Parent;
-        }
-
-        return Path.Combine(dir?.FullName ?? throw new InvalidOperationException("repository root not found"), "hardware", "robots", file);
-    }
+    public static string PathOf(string file) => RepositoryPaths.Robot(file);
 }

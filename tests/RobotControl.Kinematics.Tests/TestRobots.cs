@@ -1,18 +1,16 @@
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using RobotControl.Kinematics.Forward;
+using RobotControl.TestSupport;
 
 namespace RobotControl.Kinematics.Tests;
 
-/// <summary>The shipped robot files, loaded once.</summary>
+/// <summary>The shipped robot files (loaded once, by <see cref="ShippedRobots"/>) and random joint draws.</summary>
 internal static class TestRobots
 {
-    private static readonly Lazy<RobotDefinition> CrbLazy = new(() => RobotLoader.Load(PathOf("crb-1.0.json")));
-    private static readonly Lazy<RobotDefinition> LbLazy = new(() => RobotLoader.Load(PathOf("lb-1.0.json")));
+    public static RobotDefinition Crb => ShippedRobots.Crb;
 
-    public static RobotDefinition Crb => CrbLazy.Value;
-
-    public static RobotDefinition Lb => LbLazy.Value;
+    public static RobotDefinition Lb => ShippedRobots.Lb;
 
     public static TheoryData<string> Names => new() { "crb-1.0.json", "lb-1.0.json" };
 
@@ -23,8 +21,6 @@ internal static class TestRobots
         _ => RobotLoader.Load(PathOf(file)),
     };
 
-    public static string RobotsDirectory { get; } = FindRobotsDirectory();
-
     /// <summary>Fills <paramref name="q"/> with joint values uniform within the chain's limits (deterministic for a seeded Random).</summary>
     public static void FillRandomJoints(KinematicChain chain, Random random, Span<double> q)
     {
@@ -34,19 +30,5 @@ internal static class TestRobots
         }
     }
 
-    public static string PathOf(string file) => Path.Combine(RobotsDirectory, file);
-
-    private static string FindRobotsDirectory()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            var candidate = Path.Combine(dir.FullName, "hardware", "robots");
-            if (File.Exists(Path.Combine(candidate, "crb-1.0.json")))
-            {
-                return candidate;
-            }
-        }
-
-        throw new InvalidOperationException("hardware/robots not found above " + AppContext.BaseDirectory);
-    }
+    public static string PathOf(string file) => RepositoryPaths.Robot(file);
 }

@@ -6,8 +6,8 @@ using RobotControl.Kinematics.Inverse;
 namespace RobotControl.Bench.Ik;
 
 /// <summary>
-/// Runs Orocos KDL's ChainIkSolverPos_LMA and ChainIkSolverPos_NR_JL on the same targets through bench/kdl/kdl_ik
-/// (built by bench/kdl/build.sh). KDL times each solve itself (std::chrono::steady_clock); answers are checked here
+/// Runs Orocos KDL's ChainIkSolverPos_LMA and ChainIkSolverPos_NR_JL on the same targets through the kdl_ik program
+/// (built from bench/kdl/kdl_ik.cpp by bench/kdl/build.sh). KDL times each solve itself (std::chrono::steady_clock); answers are checked here
 /// with the same <see cref="SolveCheck"/> as every other solver.
 /// </summary>
 internal static class KdlRunner

@@ -7,7 +7,7 @@ using RobotControl.Kinematics.Inverse;
 namespace RobotControl.Bench.Ik;
 
 /// <summary>
-/// The baseline: the reference design's algorithm as algorithms.md describes it, kept faithful on purpose. CCD cycles
+/// The baseline: the reference design's algorithm as docs/algorithms.md describes it, kept faithful on purpose. CCD cycles
 /// (joints last to first, analytic k1/k2/k3 step, clamp to the joint's limits, frames recomputed after every joint) up
 /// to 15,000 cycles; once E falls below the switch threshold, an L-BFGS minimisation of E with the analytic gradient
 /// (MathNet's LimitedMemoryBfgsMinimizer standing in for ALGLIB minlbfgs, which is not served), unconstrained, with the

@@ -1,4 +1,5 @@
 using System.Globalization;
+using RobotControl.Hardware.Json;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Plugins.Standard.Kinematics;
@@ -55,7 +56,7 @@ public sealed record InverseKinematicsSettings : PluginSettings
     }
 
     /// <inheritdoc />
-    public override IEnumerable<SettingError> CheckConsistency()
+    public override IEnumerable<JsonProblem> CheckConsistency()
     {
         if (string.IsNullOrWhiteSpace(InitialJointsDeg))
         {
@@ -66,7 +67,7 @@ public sealed record InverseKinematicsSettings : PluginSettings
         {
             if (!double.TryParse(part.Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out var v) || !double.IsFinite(v))
             {
-                yield return new SettingError("initial_joints_deg", $"'{part.Trim()}' is not a number (expected comma-separated degrees)");
+                yield return new JsonProblem("initial_joints_deg", $"'{part.Trim()}' is not a number (expected comma-separated degrees)");
                 yield break;
             }
         }

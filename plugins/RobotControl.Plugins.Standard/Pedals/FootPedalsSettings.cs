@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Plugins.Standard.Pedals;
@@ -32,11 +33,11 @@ public sealed record FootPedalsSettings : PluginSettings
     public int Pedals { get; init; } = 2;
 
     /// <inheritdoc />
-    public override IEnumerable<SettingError> CheckConsistency()
+    public override IEnumerable<JsonProblem> CheckConsistency()
     {
         if (Source == PedalSourceKind.Serial && string.IsNullOrWhiteSpace(Transport))
         {
-            yield return new SettingError("transport", "a serial pedal box needs a transport");
+            yield return new JsonProblem("transport", "a serial pedal box needs a transport");
         }
     }
 }

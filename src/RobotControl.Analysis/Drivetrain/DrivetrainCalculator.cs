@@ -3,7 +3,7 @@ using RobotControl.Hardware.Model;
 namespace RobotControl.Analysis.Drivetrain;
 
 /// <summary>
-/// The design's drivetrain formula (shared spec, robots.md): T_joint = eta^n · tau · eta_m · tau_m · T_stall and
+/// The design's drivetrain formula (docs/robots.md, drivetrains): T_joint = eta^n · tau · eta_m · tau_m · T_stall and
 /// omega_joint = omega_noload / (tau · tau_m).
 /// </summary>
 public static class DrivetrainCalculator

@@ -5,7 +5,7 @@ using RobotControl.Kinematics.Forward;
 namespace RobotControl.Analysis.Sweep;
 
 /// <summary>
-/// Evaluates a <see cref="SweepSpecification"/> (shared spec, algorithms.md, capability analysis): at every grid
+/// Evaluates a <see cref="SweepSpecification"/> (docs/algorithms.md, capability analysis): at every grid
 /// point the used joints' position Jacobian J (3 x m, mm/rad) gives the manipulability, the largest speed along each
 /// axis v_a = Σ_i |J_a,i| omega_i and the largest holdable force along each axis (see <see cref="ForceSearch"/>).
 /// </summary>

@@ -18,9 +18,6 @@ public static class FrameEncoder
     public static int EncodeStatus(Span<byte> destination, byte id, byte error, ReadOnlySpan<byte> parameters) =>
         Encode(destination, id, (byte)Instruction.Status, hasError: true, error, parameters);
 
-    /// <summary>Longest possible encoding of a packet with <paramref name="parameterCount"/> parameter bytes (every third byte stuffed).</summary>
-    public static int MaxEncodedLength(int parameterCount) => FrameConstants.Overhead + 1 + parameterCount + (parameterCount / 3) + 1;
-
     private static int Encode(Span<byte> dest, byte id, byte instruction, bool hasError, byte error, ReadOnlySpan<byte> parameters)
     {
         if (dest.Length < FrameConstants.Overhead + parameters.Length + (hasError ? 1 : 0))

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Hardware.Model;
 
 namespace RobotControl.Hardware.Loading;

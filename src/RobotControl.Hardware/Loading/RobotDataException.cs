@@ -1,20 +1,12 @@
-namespace RobotControl.Hardware.Loading;
+using RobotControl.Hardware.Json;
 
-/// <summary>One problem found in a data file: which file, which field (JSON path) and what is wrong.</summary>
-/// <param name="File">The file's path.</param>
-/// <param name="JsonPath">JSON path of the field, e.g. <c>$.dh[2].a_mm</c>.</param>
-/// <param name="Message">What is wrong.</param>
-public sealed record DataError(string File, string JsonPath, string Message)
-{
-    /// <inheritdoc />
-    public override string ToString() => $"{File}: {JsonPath}: {Message}";
-}
+namespace RobotControl.Hardware.Loading;
 
 /// <summary>Thrown when a data file is invalid; lists every problem found, nothing is half-applied.</summary>
 public sealed class RobotDataException : Exception
 {
     /// <summary>Creates the exception from the problems found.</summary>
-    public RobotDataException(IReadOnlyList<DataError> errors)
+    public RobotDataException(IReadOnlyList<JsonProblem> errors)
         : base(Format(errors))
     {
         Errors = errors;
@@ -40,10 +32,20 @@ public sealed class RobotDataException : Exception
         Errors = [];
     }
 
-    /// <summary>Every problem found.</summary>
-    public IReadOnlyList<DataError> Errors { get; }
+    /// <summary>Every problem found, each naming its file (<see cref="JsonProblem.File"/>) and JSON path.</summary>
+    public IReadOnlyList<JsonProblem> Errors { get; }
 
-    private static string Format(IReadOnlyList<DataError> errors) =>
+    /// <summary>Throws when <paramref name="sink"/> holds any problem.</summary>
+    /// <exception cref="RobotDataException">Every problem in the sink.</exception>
+    internal static void ThrowIfAny(JsonProblemSink sink)
+    {
+        if (sink.Problems.Count > 0)
+        {
+            throw new RobotDataException(sink.Problems.ToArray());
+        }
+    }
+
+    private static string Format(IReadOnlyList<JsonProblem> errors) =>
         errors.Count == 1
             ? errors[0].ToString()
             : $"{errors.Count} problems:{Environment.NewLine}" + string.Join(Environment.NewLine, errors.Select(e => "  " + e));

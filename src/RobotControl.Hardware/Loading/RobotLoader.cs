@@ -1,4 +1,5 @@
 using System.Text.Json;
+using RobotControl.Hardware.Json;
 using RobotControl.Hardware.Model;
 
 namespace RobotControl.Hardware.Loading;
@@ -45,7 +46,7 @@ public static class RobotLoader
         }
         catch (JsonException ex)
         {
-            throw new RobotDataException([new DataError(fullPath, "$", $"not valid JSON: {ex.Message}")]);
+            throw new RobotDataException([new JsonProblem("$", $"not valid JSON: {ex.Message}") { File = fullPath }]);
         }
 
         using (document)
@@ -63,7 +64,7 @@ public static class RobotLoader
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {
-            throw new RobotDataException([new DataError(fullPath, "$", $"cannot read the file: {ex.Message}")]);
+            throw new RobotDataException([new JsonProblem("$", $"cannot read the file: {ex.Message}") { File = fullPath }]);
         }
 
         try
@@ -72,18 +73,18 @@ public static class RobotLoader
         }
         catch (JsonException ex)
         {
-            throw new RobotDataException([new DataError(fullPath, "$", $"not valid JSON: {ex.Message}")]);
+            throw new RobotDataException([new JsonProblem("$", $"not valid JSON: {ex.Message}") { File = fullPath }]);
         }
     }
 
     private static RobotDefinition Read(JsonElement root, string file)
     {
-        var sink = new DataErrorSink(file);
+        var sink = new JsonProblemSink(file);
         var r = new JsonFieldReader(sink, root, "$");
         if (!r.IsObject)
         {
             sink.Add("$", "the file must hold a JSON object");
-            sink.ThrowIfAny();
+            RobotDataException.ThrowIfAny(sink);
         }
 
         var schema = r.String("schema");
@@ -141,13 +142,13 @@ public static class RobotLoader
         var modules = ModuleSectionReader.Read(r, actuators, arms);
         r.RejectUnknownFields();
 
-        sink.ThrowIfAny();
+        RobotDataException.ThrowIfAny(sink);
         return new RobotDefinition(
             name, description, file, crossSectionArea, joints, dh, positionJoints, actuators, tool!, arms,
             mirror!.Value, crossSection!, requirements!, motors, gearheads) { Modules = modules };
     }
 
-    private static List<JointDefinition> ReadJoints(JsonFieldReader r, DataErrorSink sink)
+    private static List<JointDefinition> ReadJoints(JsonFieldReader r, JsonProblemSink sink)
     {
         var result = new List<JointDefinition>();
         var items = r.Array("joints", nonEmpty: true) ?? [];
@@ -183,7 +184,7 @@ public static class RobotLoader
         return result;
     }
 
-    private static List<DhRow> ReadDh(JsonFieldReader r, DataErrorSink sink, Dictionary<string, int> jointIndex, int jointCount)
+    private static List<DhRow> ReadDh(JsonFieldReader r, JsonProblemSink sink, Dictionary<string, int> jointIndex, int jointCount)
     {
         var rows = new List<DhRow>();
         var items = r.Array("dh");
@@ -251,7 +252,7 @@ public static class RobotLoader
         return rows;
     }
 
-    private static List<int> ReadJointNameList(IReadOnlyList<JsonElement>? items, string path, DataErrorSink sink, Dictionary<string, int> jointIndex)
+    private static List<int> ReadJointNameList(IReadOnlyList<JsonElement>? items, string path, JsonProblemSink sink, Dictionary<string, int> jointIndex)
     {
         var result = new List<int>();
         for (var i = 0; i < (items?.Count ?? 0); i++)
@@ -270,7 +271,7 @@ public static class RobotLoader
     }
 
     private static List<ActuatorDefinition> ReadActuators(
-        JsonFieldReader r, DataErrorSink sink, Dictionary<string, int> jointIndex, int jointCount,
+        JsonFieldReader r, JsonProblemSink sink, Dictionary<string, int> jointIndex, int jointCount,
         List<MotorDefinition> motors, List<GearheadDefinition> gearheads)
     {
         var result = new List<ActuatorDefinition>();
@@ -469,7 +470,7 @@ public static class RobotLoader
         return new ToolDefinition(jmin * Deg, jmax * Deg, dm, lead, angle * Deg, f, offset * Deg, l1, l2, l3, doff);
     }
 
-    private static List<ArmPlacement> ReadArms(JsonFieldReader r, DataErrorSink sink)
+    private static List<ArmPlacement> ReadArms(JsonFieldReader r, JsonProblemSink sink)
     {
         var result = new List<ArmPlacement>();
         var items = r.Array("arms", nonEmpty: true) ?? [];
@@ -486,7 +487,7 @@ public static class RobotLoader
         return result;
     }
 
-    private static Vector3Data? ReadVector(JsonFieldReader r, string name, DataErrorSink sink)
+    private static Vector3Data? ReadVector(JsonFieldReader r, string name, JsonProblemSink sink)
     {
         var items = r.Array(name);
         if (items is null)
@@ -509,7 +510,7 @@ public static class RobotLoader
         return new Vector3Data(v[0], v[1], v[2]);
     }
 
-    private static CrossSectionDefinition? ReadCrossSection(JsonFieldReader? c, DataErrorSink sink, Dictionary<string, int> jointIndex, List<JointDefinition> joints)
+    private static CrossSectionDefinition? ReadCrossSection(JsonFieldReader? c, JsonProblemSink sink, Dictionary<string, int> jointIndex, List<JointDefinition> joints)
     {
         if (c is null)
         {
@@ -566,7 +567,7 @@ public static class RobotLoader
         return new CrossSectionDefinition(xj, xmin * Deg, xmax * Deg, yj, ymin * Deg, ymax * Deg, step * Deg, fixedRad, used);
     }
 
-    private static RequirementsDefinition? ReadRequirements(JsonFieldReader? q, DataErrorSink sink)
+    private static RequirementsDefinition? ReadRequirements(JsonFieldReader? q, JsonProblemSink sink)
     {
         if (q is null)
         {
@@ -598,7 +599,7 @@ public static class RobotLoader
     private static void ReadCatalog(string path, List<MotorDefinition> motors, List<GearheadDefinition> gearheads)
     {
         using var doc = Parse(path);
-        var sink = new DataErrorSink(path);
+        var sink = new JsonProblemSink(path);
         var r = new JsonFieldReader(sink, doc.RootElement, "$");
         var schema = r.String("schema");
         r.StringOrNull("source");
@@ -672,6 +673,6 @@ public static class RobotLoader
         }
 
         r.RejectUnknownFields();
-        sink.ThrowIfAny();
+        RobotDataException.ThrowIfAny(sink);
     }
 }

@@ -4,7 +4,7 @@ using RobotControl.Kinematics.Geometry;
 namespace RobotControl.Kinematics.ClosedForm;
 
 /// <summary>
-/// Closed-form position inverse kinematics of a CRB-1.0 arm (robots.md): the three position joints phi1 (shoulder yaw
+/// Closed-form position inverse kinematics of a CRB-1.0 arm (docs/robots.md): the three position joints phi1 (shoulder yaw
 /// about the base z), phi2 (shoulder pitch about the yawed -y) and phi3 (elbow) from a tool position, elbow up
 /// (phi3 in 0..105°, or the file's elbow range within 0..180°) and no inverted shoulder (|phi2| ≤ 90°).
 /// <para>

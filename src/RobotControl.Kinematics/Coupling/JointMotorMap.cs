@@ -4,7 +4,7 @@ using RobotControl.Hardware.Model;
 namespace RobotControl.Kinematics.Coupling;
 
 /// <summary>
-/// Joint &lt;-&gt; motor mapping of one arm from the robot file's coupling coefficients (robots.md): the output side of
+/// Joint &lt;-&gt; motor mapping of one arm from the robot file's coupling coefficients (docs/robots.md): the output side of
 /// kinematic actuator k turns a_k = Σ_j C[k, j] q_j (e.g. the upper sun gear of a differential shoulder turns
 /// phi1 + phi2), and its motor shaft turns a_k times the drivetrain's total reduction (tau · tau_m). The inverse of C is
 /// computed once with MathNet at construction; every mapping after that is allocation-free. Angles in radians; the

@@ -4,7 +4,7 @@ namespace RobotControl.Kinematics.Forward;
 
 /// <summary>
 /// The frames of a <see cref="KinematicChain"/> for one joint vector, computed by the forward recursion
-/// (docs: shared spec, algorithms.md). Frame 0 is the base; frame i+1 follows DH row i. Not thread-safe; allocates
+/// (docs/algorithms.md). Frame 0 is the base; frame i+1 follows DH row i. Not thread-safe; allocates
 /// nothing after construction.
 /// </summary>
 public sealed class ChainState
@@ -42,9 +42,6 @@ public sealed class ChainState
 
     /// <summary>Origin of frame <paramref name="frame"/> (0 = base).</summary>
     public Vector3d Origin(int frame) => _p[frame];
-
-    /// <summary>Z axis of frame <paramref name="frame"/>.</summary>
-    public Vector3d AxisZ(int frame) => _z[frame];
 
     /// <summary>Orientation of frame <paramref name="frame"/>.</summary>
     public Rotation3d Rotation(int frame) => new(_x[frame], _y[frame], _z[frame]);

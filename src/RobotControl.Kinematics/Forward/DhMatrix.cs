@@ -5,7 +5,7 @@ using RobotControl.Kinematics.Geometry;
 namespace RobotControl.Kinematics.Forward;
 
 /// <summary>
-/// Forward kinematics as the plain product of 4 x 4 homogeneous DH transforms (robots.md):
+/// Forward kinematics as the plain product of 4 x 4 homogeneous DH transforms (docs/robots.md):
 /// T(i-1 -> i) = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i). Built from MathNet matrices, one elementary transform at a
 /// time, so it is an independent check of the forward recursion in <see cref="ChainState"/>. Allocates; not for the
 /// control loop.

@@ -3,7 +3,7 @@ using RobotControl.Kinematics.Geometry;
 namespace RobotControl.Kinematics.Forward;
 
 /// <summary>
-/// Yoshikawa's manipulability w = sqrt(det(J Jᵀ)) over the position rows of the geometric Jacobian (algorithms.md),
+/// Yoshikawa's manipulability w = sqrt(det(J Jᵀ)) over the position rows of the geometric Jacobian (docs/algorithms.md),
 /// in mm³ for three or more joints. J Jᵀ is 3 x 3 whatever the joint count, so its determinant is written out in
 /// closed form: allocation-free, for the control loop and the capability sweeps.
 /// </summary>

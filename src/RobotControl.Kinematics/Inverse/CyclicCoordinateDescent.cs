@@ -3,7 +3,7 @@ using RobotControl.Kinematics.Geometry;
 namespace RobotControl.Kinematics.Inverse;
 
 /// <summary>
-/// One cycle of cyclic coordinate descent with the analytic per-joint step of algorithms.md: joints from last to first,
+/// One cycle of cyclic coordinate descent with the analytic per-joint step of docs/algorithms.md: joints from last to first,
 /// each rotated by the φ maximising g(φ) = k1 (1 - cos φ) + k2 cos φ + k3 sin φ, restricted to the joint's range.
 /// </summary>
 internal static class CyclicCoordinateDescent

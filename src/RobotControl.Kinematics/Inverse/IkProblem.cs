@@ -5,12 +5,12 @@ namespace RobotControl.Kinematics.Inverse;
 
 /// <summary>
 /// One prepared IK target on one chain, with the frame workspace to evaluate it: the error E and its gradient exactly as
-/// algorithms.md defines them, and the least-squares form the damped Newton step works on. Allocates only in the
+/// docs/algorithms.md defines them, and the least-squares form the damped Newton step works on. Allocates only in the
 /// constructor; not thread-safe.
 /// </summary>
 /// <remarks>
 /// Least-squares form: residual r = [sqrt(wp) (Ph - Pd); sqrt(wo) (Rh_j - Rd_j) for each selected axis j], so
-/// |r|² = wp |Pd - Ph|² + 2 wo Σ σ_j (1 - Rd_j·Rh_j). That is the quantity the CCD step of algorithms.md maximises
+/// |r|² = wp |Pd - Ph|² + 2 wo Σ σ_j (1 - Rd_j·Rh_j). That is the quantity the CCD step of docs/algorithms.md maximises
 /// the complement of (k2 = wp Pid·Pih + wo Σ σ_j Rd_j·Rh_j), it has the same zero set as E, and it is linear rather than
 /// quartic in the angle error, so Gauss-Newton converges quadratically on it where it would crawl on E.
 /// </remarks>
@@ -196,7 +196,7 @@ internal sealed class IkProblem
         }
     }
 
-    /// <summary>E = wp |Pd - Ph|² + wo Σ σ_j (Rd_j·Rh_j - 1)² (algorithms.md) at the last <see cref="Evaluate"/>.</summary>
+    /// <summary>E = wp |Pd - Ph|² + wo Σ σ_j (Rd_j·Rh_j - 1)² (docs/algorithms.md) at the last <see cref="Evaluate"/>.</summary>
     internal double SpecError()
     {
         var e = PositionWeight * (TargetPosition - _state.ToolPosition).LengthSquared;
@@ -211,7 +211,7 @@ internal sealed class IkProblem
     }
 
     /// <summary>
-    /// dE/dθ_i = -2 wp z_i·(Pih x (Pd - Ph)) + wo Σ σ_j 2 (Rd_j·Rh_j - 1) z_i·(Rh_j x Rd_j) (algorithms.md) at the last
+    /// dE/dθ_i = -2 wp z_i·(Pih x (Pd - Ph)) + wo Σ σ_j 2 (Rd_j·Rh_j - 1) z_i·(Rh_j x Rd_j) (docs/algorithms.md) at the last
     /// <see cref="Evaluate"/>.
     /// </summary>
     internal void SpecGradient(Span<double> gradient)

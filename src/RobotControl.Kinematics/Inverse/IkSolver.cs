@@ -4,7 +4,7 @@ using RobotControl.Kinematics.Geometry;
 namespace RobotControl.Kinematics.Inverse;
 
 /// <summary>
-/// Numerical inverse kinematics for any revolute DH chain (algorithms.md): cyclic coordinate descent with the analytic
+/// Numerical inverse kinematics for any revolute DH chain (docs/algorithms.md): cyclic coordinate descent with the analytic
 /// per-joint step to get near, then a bound-constrained damped Gauss-Newton (Levenberg-Marquardt) on the exact Jacobian
 /// of position and selected axes ((3 + 3k) x n) with the joint limits inside the iteration, and deterministic random restarts when a run stalls at a limit
 /// or a local minimum. Warm starts: pass the previous solution as the seed. An unreachable or degenerate target gives
@@ -175,7 +175,7 @@ public sealed class IkSolver
         return Result(target, reached, used);
     }
 
-    /// <summary>E of algorithms.md for <paramref name="q"/> (weights from <see cref="Options"/>); for tests and tools.</summary>
+    /// <summary>E of docs/algorithms.md for <paramref name="q"/> (weights from <see cref="Options"/>); for tests and tools.</summary>
     internal double SpecError(in IkTarget target, ReadOnlySpan<double> q)
     {
         _problem.SetTarget(target);
@@ -183,7 +183,7 @@ public sealed class IkSolver
         return _problem.SpecError();
     }
 
-    /// <summary>dE/dθ of algorithms.md for <paramref name="q"/>; for tests and tools.</summary>
+    /// <summary>dE/dθ of docs/algorithms.md for <paramref name="q"/>; for tests and tools.</summary>
     internal void SpecGradient(in IkTarget target, ReadOnlySpan<double> q, Span<double> gradient)
     {
         _problem.SetTarget(target);

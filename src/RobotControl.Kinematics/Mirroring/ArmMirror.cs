@@ -4,7 +4,7 @@ using RobotControl.Kinematics.Geometry;
 namespace RobotControl.Kinematics.Mirroring;
 
 /// <summary>
-/// Mirroring for the left arm (robots.md, algorithms.md Homing). Both robots are modelled as the RIGHT arm; the left arm
+/// Mirroring for the left arm (docs/robots.md; docs/algorithms.md, the left arm). Both robots are modelled as the RIGHT arm; the left arm
 /// is its mirror image in the plane through the body origin with the robot file's <c>mirror_plane_normal</c> n, so one
 /// kinematic model serves both arms: a left-arm target is reflected into the right-arm model, solved there, and the
 /// joint vector is sent to the left arm's (mirror-built) joints unchanged.
@@ -86,9 +86,6 @@ public sealed class ArmMirror
 
     /// <summary>Mirrors an orientation in this mirror's plane (a proper rotation, see the class remarks).</summary>
     public Rotation3d MirrorRotation(Rotation3d rotation) => Reflect(rotation, Normal);
-
-    /// <summary>Mirrors a pose in this mirror's plane, e.g. an input device's pose for the left arm.</summary>
-    public Pose MirrorPose(Pose pose) => Reflect(pose, Normal);
 
     /// <summary>
     /// A point in the body frame as the target of the right-arm model: relative to the arm's base and, for the

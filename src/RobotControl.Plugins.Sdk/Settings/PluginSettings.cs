@@ -1,3 +1,5 @@
+using RobotControl.Hardware.Json;
+
 namespace RobotControl.Plugins.Sdk.Settings;
 
 /// <summary>
@@ -9,12 +11,7 @@ public abstract record PluginSettings
 {
     /// <summary>
     /// Checks rules that span several settings (single-setting ranges are checked from the attributes). Return one
-    /// error per problem, named by the setting's JSON name.
+    /// problem per finding, its path the setting's JSON name.
     /// </summary>
-    public virtual IEnumerable<SettingError> CheckConsistency() => [];
+    public virtual IEnumerable<JsonProblem> CheckConsistency() => [];
 }
-
-/// <summary>A settings problem.</summary>
-/// <param name="Setting">The setting's JSON name (or empty for the whole object).</param>
-/// <param name="Message">What is wrong.</param>
-public sealed record SettingError(string Setting, string Message);

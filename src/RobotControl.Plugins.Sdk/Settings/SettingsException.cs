@@ -1,10 +1,12 @@
+using RobotControl.Hardware.Json;
+
 namespace RobotControl.Plugins.Sdk.Settings;
 
 /// <summary>Settings that failed validation; <see cref="Errors"/> lists every problem.</summary>
 public sealed class SettingsException : Exception
 {
     /// <summary>Creates the exception from the problems found.</summary>
-    public SettingsException(string instanceName, IReadOnlyList<SettingError> errors)
+    public SettingsException(string instanceName, IReadOnlyList<JsonProblem> errors)
         : base(Format(instanceName, errors))
     {
         Errors = errors;
@@ -14,14 +16,14 @@ public sealed class SettingsException : Exception
     public SettingsException(string message)
         : base(message)
     {
-        Errors = [new SettingError("", message)];
+        Errors = [new JsonProblem("", message)];
     }
 
     /// <summary>Creates an exception with a message and cause.</summary>
     public SettingsException(string message, Exception innerException)
         : base(message, innerException)
     {
-        Errors = [new SettingError("", message)];
+        Errors = [new JsonProblem("", message)];
     }
 
     /// <summary>Creates an empty exception.</summary>
@@ -30,9 +32,9 @@ public sealed class SettingsException : Exception
     {
     }
 
-    /// <summary>Every problem found.</summary>
-    public IReadOnlyList<SettingError> Errors { get; }
+    /// <summary>Every problem found, its path the setting's JSON name (empty for the whole object).</summary>
+    public IReadOnlyList<JsonProblem> Errors { get; }
 
-    private static string Format(string instanceName, IReadOnlyList<SettingError> errors) =>
-        $"'{instanceName}': invalid settings: " + string.Join("; ", errors.Select(e => e.Setting.Length == 0 ? e.Message : $"{e.Setting}: {e.Message}"));
+    private static string Format(string instanceName, IReadOnlyList<JsonProblem> errors) =>
+        $"'{instanceName}': invalid settings: " + string.Join("; ", errors);
 }

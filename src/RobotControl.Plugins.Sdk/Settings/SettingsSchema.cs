@@ -2,6 +2,7 @@ using System.Collections.Concurrent;
 using System.Globalization;
 using System.Reflection;
 using System.Text.Json;
+using RobotControl.Hardware.Json;
 
 namespace RobotControl.Plugins.Sdk.Settings;
 
@@ -78,10 +79,10 @@ public sealed class SettingsSchema
     public PluginSettings CreateDefault() => (PluginSettings)Activator.CreateInstance(SettingsType)!;
 
     /// <summary>Every problem with <paramref name="settings"/> (empty when valid).</summary>
-    public IReadOnlyList<SettingError> Validate(PluginSettings settings)
+    public IReadOnlyList<JsonProblem> Validate(PluginSettings settings)
     {
         ArgumentNullException.ThrowIfNull(settings);
-        var errors = new List<SettingError>();
+        var errors = new List<JsonProblem>();
         foreach (var s in Settings)
         {
             var value = s.Property.GetValue(settings);
@@ -94,10 +95,10 @@ public sealed class SettingsSchema
                     CheckRange(s, (int)value!, errors);
                     break;
                 case SettingKind.Text when s.Required && string.IsNullOrWhiteSpace((string?)value):
-                    errors.Add(new SettingError(s.JsonName, "is required"));
+                    errors.Add(new JsonProblem(s.JsonName, "is required"));
                     break;
                 case SettingKind.Choice when !Enum.IsDefined(s.Property.PropertyType, value!):
-                    errors.Add(new SettingError(s.JsonName, $"'{value}' is not one of {string.Join(", ", s.EnumNames)}"));
+                    errors.Add(new JsonProblem(s.JsonName, $"'{value}' is not one of {string.Join(", ", s.EnumNames)}"));
                     break;
                 default:
                     break;
@@ -127,7 +128,7 @@ public sealed class SettingsSchema
     /// Reads settings from a JSON object: missing settings keep their defaults; unknown names, wrong JSON types and
     /// out-of-range values are added to <paramref name="errors"/> (named by setting). Returns null when any were found.
     /// </summary>
-    public PluginSettings? Read(JsonElement json, ICollection<SettingError> errors)
+    public PluginSettings? Read(JsonElement json, ICollection<JsonProblem> errors)
     {
         ArgumentNullException.ThrowIfNull(errors);
         var before = errors.Count;
@@ -139,26 +140,29 @@ public sealed class SettingsSchema
 
         if (json.ValueKind != JsonValueKind.Object)
         {
-            errors.Add(new SettingError("", "expected an object of settings"));
+            errors.Add(new JsonProblem("", "expected an object of settings"));
             return null;
         }
 
-        foreach (var member in json.EnumerateObject())
+        var sink = new JsonProblemSink();
+        var reader = new JsonFieldReader(sink, json, "", JsonWording.Brief);
+        foreach (var (name, element) in reader.Properties())
         {
-            if (!_byName.TryGetValue(member.Name, out var s))
+            if (!_byName.TryGetValue(name, out var s))
             {
-                errors.Add(new SettingError(member.Name, $"unknown setting (known: {string.Join(", ", Settings.Select(x => x.JsonName))})"));
+                sink.Add(name, $"unknown setting (known: {string.Join(", ", Settings.Select(x => x.JsonName))})");
                 continue;
             }
 
-            if (ReadValue(s, member.Value, out var value, out var problem))
+            if (ReadValue(s, element, reader) is { } value)
             {
                 s.Property.SetValue(settings, value);
             }
-            else
-            {
-                errors.Add(new SettingError(s.JsonName, problem));
-            }
+        }
+
+        foreach (var p in sink.Problems)
+        {
+            errors.Add(p);
         }
 
         // Values that did not parse kept their defaults, so validating still finds only real problems.
@@ -211,59 +215,48 @@ public sealed class SettingsSchema
         : type.IsEnum ? SettingKind.Choice
         : null;
 
-    private static bool ReadValue(SettingDescriptor s, JsonElement json, out object? value, out string problem)
+    private static object? ReadValue(SettingDescriptor s, JsonElement json, JsonFieldReader reader)
     {
-        value = null;
-        problem = "";
+        var path = reader.FieldPath(s.JsonName);
         switch (s.Kind)
         {
-            case SettingKind.Number when json.ValueKind == JsonValueKind.Number:
-                value = json.GetDouble();
-                return true;
-            case SettingKind.Integer when json.ValueKind == JsonValueKind.Number && json.TryGetInt32(out var i):
-                value = i;
-                return true;
-            case SettingKind.Boolean when json.ValueKind is JsonValueKind.True or JsonValueKind.False:
-                value = json.GetBoolean();
-                return true;
-            case SettingKind.Text when json.ValueKind == JsonValueKind.String:
-                value = json.GetString();
-                return true;
-            case SettingKind.Choice when json.ValueKind == JsonValueKind.String:
+            case SettingKind.Number:
+                var number = reader.ReadNumber(json, path);
+                return double.IsNaN(number) ? null : number;
+            case SettingKind.Integer:
+                return reader.ReadInteger(json, path);
+            case SettingKind.Boolean:
+                return reader.ReadBoolean(json, path);
+            case SettingKind.Choice:
+                if (json.ValueKind != JsonValueKind.String)
+                {
+                    reader.Sink.Add(path, $"expected a name, found {JsonFieldReader.KindName(json)}");
+                    return null;
+                }
+
                 var name = json.GetString()!;
                 var index = s.EnumNames.ToList().IndexOf(name);
                 if (index < 0)
                 {
-                    problem = $"'{name}' is not one of {string.Join(", ", s.EnumNames)}";
-                    return false;
+                    reader.Sink.Add(path, $"'{name}' is not one of {string.Join(", ", s.EnumNames)}");
+                    return null;
                 }
 
-                value = Enum.GetValues(s.Property.PropertyType).GetValue(index);
-                return true;
+                return Enum.GetValues(s.Property.PropertyType).GetValue(index);
             default:
-                problem = $"expected {Expected(s.Kind)}, found {json.ValueKind.ToString().ToLowerInvariant()}";
-                return false;
+                return reader.ReadString(json, path);
         }
     }
 
-    private static string Expected(SettingKind kind) => kind switch
-    {
-        SettingKind.Number => "a number",
-        SettingKind.Integer => "an integer",
-        SettingKind.Boolean => "true or false",
-        SettingKind.Choice => "a name",
-        _ => "a string",
-    };
-
-    private static void CheckRange(SettingDescriptor s, double value, List<SettingError> errors)
+    private static void CheckRange(SettingDescriptor s, double value, List<JsonProblem> errors)
     {
         if (!double.IsFinite(value))
         {
-            errors.Add(new SettingError(s.JsonName, "must be a finite number"));
+            errors.Add(new JsonProblem(s.JsonName, "must be a finite number"));
         }
         else if ((!double.IsNaN(s.Minimum) && value < s.Minimum) || (!double.IsNaN(s.Maximum) && value > s.Maximum))
         {
-            errors.Add(new SettingError(s.JsonName, string.Create(CultureInfo.InvariantCulture, $"{value} is outside {Bound(s.Minimum)}..{Bound(s.Maximum)}{(s.Units.Length > 0 ? " " + s.Units : "")}")));
+            errors.Add(new JsonProblem(s.JsonName, string.Create(CultureInfo.InvariantCulture, $"{value} is outside {Bound(s.Minimum)}..{Bound(s.Maximum)}{(s.Units.Length > 0 ? " " + s.Units : "")}")));
         }
     }
 

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Observation;
 
@@ -117,7 +118,7 @@ public sealed class PluginGraph
     /// <exception cref="GraphException">A cycle without a delayed wire, or an observer whose outputs feed others.</exception>
     public GraphProgram Compile()
     {
-        var problems = new List<GraphProblem>();
+        var problems = new List<JsonProblem>();
         var index = new Dictionary<Plugin, int>();
         for (var i = 0; i < _instances.Count; i++)
         {
@@ -130,7 +131,7 @@ public sealed class PluginGraph
             var target = _byName[InstanceOf(wire.To)];
             if (source is ISignalObserver && target is not ISignalObserver)
             {
-                problems.Add(new GraphProblem(wire.Origin, $"'{source.Name}' observes every signal and runs last, so its output '{wire.From}' cannot feed '{wire.To}'"));
+                problems.Add(new JsonProblem(wire.Origin, $"'{source.Name}' observes every signal and runs last, so its output '{wire.From}' cannot feed '{wire.To}'"));
             }
         }
 
@@ -188,7 +189,7 @@ public sealed class PluginGraph
     private IEnumerable<string> AllOutputs() =>
         _instances.SelectMany(p => p.Outputs.Select(o => SignalName.Join(p.Name, o.Name)));
 
-    private List<Plugin> TopologicalOrder(Dictionary<Plugin, int> index, List<GraphProblem> problems)
+    private List<Plugin> TopologicalOrder(Dictionary<Plugin, int> index, List<JsonProblem> problems)
     {
         // Kahn's algorithm over undelayed wires. Ties keep insertion order, so the order is stable and predictable;
         // observers are taken only when no other instance is ready, so they run after everything they watch.
@@ -245,7 +246,7 @@ public sealed class PluginGraph
         return order;
     }
 
-    private void ReportCycle(List<(int Source, Wire Wire)>[] predecessors, bool[] done, List<GraphProblem> problems)
+    private void ReportCycle(List<(int Source, Wire Wire)>[] predecessors, bool[] done, List<JsonProblem> problems)
     {
         // Every instance left over has an undelayed source that is also left over, so walking backwards from any of
         // them never ends: the first repeated instance closes a cycle.
@@ -264,7 +265,7 @@ public sealed class PluginGraph
         var cycle = walk.Skip(seenAt[current]).Reverse().ToList();
         var names = cycle.Select(c => _instances[c.Node].Name).Prepend(_instances[current].Name);
         var wires = cycle.Select(c => c.Via).ToList();
-        problems.Add(new GraphProblem(
+        problems.Add(new JsonProblem(
             wires[0].Origin,
             $"cycle without a delayed wire: {string.Join(" -> ", names)} (wires: {string.Join(", ", wires.Select(w => $"{w.From} -> {w.To}"))}); mark one wire of the cycle \"delayed\": true to feed it back one tick later"));
     }

@@ -1,12 +1,14 @@
 using System.Globalization;
 using System.Text;
 using System.Text.Json;
+using RobotControl.Hardware.Json;
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Settings;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.Loop;
 using RobotControl.Runtime.Robot;
 
 namespace RobotControl.Runtime.GraphFiles;
@@ -41,7 +43,7 @@ public static class GraphFile
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {
-            throw new GraphException([new GraphProblem("$", $"cannot read the file: {ex.Message}")], fullPath);
+            throw new GraphException([new JsonProblem("$", $"cannot read the file: {ex.Message}")], fullPath);
         }
 
         return LoadFromText(text, fullPath, catalog, time);
@@ -63,16 +65,16 @@ public static class GraphFile
         }
         catch (JsonException ex)
         {
-            throw new GraphException([new GraphProblem("$", $"not valid JSON: {ex.Message}")], fullPath);
+            throw new GraphException([new JsonProblem("$", $"not valid JSON: {ex.Message}")], fullPath);
         }
 
         using (document)
         {
-            var problems = new List<GraphProblem>();
+            var problems = new JsonProblemSink();
             var loaded = Read(document.RootElement, fullPath, baseDirectory, catalog, time, problems);
-            if (problems.Count > 0 || loaded is null)
+            if (problems.Problems.Count > 0 || loaded is null)
             {
-                throw new GraphException(problems, fullPath);
+                throw new GraphException(problems.Problems, fullPath);
             }
 
             return loaded;
@@ -139,26 +141,23 @@ public static class GraphFile
         return Encoding.UTF8.GetString(stream.ToArray()) + Environment.NewLine;
     }
 
-    private static LoadedGraph? Read(JsonElement root, string fullPath, string baseDirectory, PluginCatalog catalog, TimeProvider time, List<GraphProblem> problems)
+    private static LoadedGraph? Read(JsonElement root, string fullPath, string baseDirectory, PluginCatalog catalog, TimeProvider time, JsonProblemSink problems)
     {
         if (root.ValueKind != JsonValueKind.Object)
         {
-            problems.Add(new GraphProblem("$", "expected a JSON object"));
+            problems.Add("$", "expected a JSON object");
             return null;
         }
 
-        foreach (var member in root.EnumerateObject().Where(m => !TopLevel.Contains(m.Name)))
-        {
-            problems.Add(new GraphProblem($"$.{member.Name}", $"unknown field (known: {string.Join(", ", TopLevel)})"));
-        }
-
-        var schema = OptionalString(root, "schema", "$.schema", problems);
+        var r = new JsonFieldReader(problems, root, "$", JsonWording.Brief);
+        r.RejectFieldsOtherThan(TopLevel);
+        var schema = r.StringOrNull("schema");
         if (schema != GraphDocument.Schema)
         {
-            problems.Add(new GraphProblem("$.schema", $"expected \"{GraphDocument.Schema}\""));
+            problems.Add("$.schema", $"expected \"{GraphDocument.Schema}\"");
         }
 
-        var robotPath = OptionalString(root, "robot", "$.robot", problems);
+        var robotPath = r.StringOrNull("robot");
         RobotDefinition? robot = null;
         if (robotPath is not null)
         {
@@ -168,17 +167,17 @@ public static class GraphFile
             }
             catch (RobotDataException ex)
             {
-                problems.Add(new GraphProblem("$.robot", $"robot file '{robotPath}' is invalid: {ex.Message}"));
+                problems.Add("$.robot", $"robot file '{robotPath}' is invalid: {ex.Message}");
             }
         }
 
-        var transport = OptionalString(root, "transport", "$.transport", problems) ?? "virtual";
+        var transport = r.StringOrNull("transport") ?? "virtual";
         var rate = GraphDocument.DefaultLoopRateHz;
-        if (root.TryGetProperty("loop_rate_hz", out var rateJson))
+        if (r.Raw("loop_rate_hz", required: false) is { } rateJson)
         {
-            if (rateJson.ValueKind != JsonValueKind.Number || !double.IsFinite(rate = rateJson.GetDouble()) || rate < 1 || rate > 20_000)
+            if (rateJson.ValueKind != JsonValueKind.Number || !LoopRate.IsValid(rate = rateJson.GetDouble()))
             {
-                problems.Add(new GraphProblem("$.loop_rate_hz", "expected a number within 1..20000 (Hz)"));
+                problems.Add("$.loop_rate_hz", $"expected a number within {LoopRate.RangeText} (Hz)");
                 rate = GraphDocument.DefaultLoopRateHz;
             }
         }
@@ -208,7 +207,7 @@ public static class GraphFile
         }
 
         var wires = ReadWires(root, graph, problems, failed);
-        if (problems.Count > 0)
+        if (problems.Problems.Count > 0)
         {
             return null;
         }
@@ -220,7 +219,11 @@ public static class GraphFile
         }
         catch (GraphException ex)
         {
-            problems.AddRange(ex.Problems);
+            foreach (var p in ex.Problems)
+            {
+                problems.Add(p.Path, p.Message);
+            }
+
             return null;
         }
 
@@ -229,12 +232,12 @@ public static class GraphFile
         return new LoadedGraph(fullPath, document, robot, robotNode, graph, program);
     }
 
-    private static List<InstanceSpec> ReadInstances(JsonElement root, string baseDirectory, RobotDefinition? robot, PluginCatalog catalog, TimeProvider time, PluginGraph graph, List<GraphProblem> problems)
+    private static List<InstanceSpec> ReadInstances(JsonElement root, string baseDirectory, RobotDefinition? robot, PluginCatalog catalog, TimeProvider time, PluginGraph graph, JsonProblemSink problems)
     {
         var specs = new List<InstanceSpec>();
         if (!root.TryGetProperty("instances", out var array) || array.ValueKind != JsonValueKind.Array)
         {
-            problems.Add(new GraphProblem("$.instances", "expected an array of instances"));
+            problems.Add("$.instances", "expected an array of instances");
             return specs;
         }
 
@@ -245,17 +248,14 @@ public static class GraphFile
             var at = string.Create(CultureInfo.InvariantCulture, $"$.instances[{i}]");
             if (item.ValueKind != JsonValueKind.Object)
             {
-                problems.Add(new GraphProblem(at, "expected an object with name, type and settings"));
+                problems.Add(at, "expected an object with name, type and settings");
                 continue;
             }
 
-            foreach (var member in item.EnumerateObject().Where(m => m.Name is not ("name" or "type" or "settings")))
-            {
-                problems.Add(new GraphProblem($"{at}.{member.Name}", "unknown field (known: name, type, settings)"));
-            }
-
-            var name = RequiredString(item, "name", $"{at}.name", problems);
-            var typeName = RequiredString(item, "type", $"{at}.type", problems);
+            var fields = new JsonFieldReader(problems, item, at, JsonWording.Brief);
+            fields.RejectFieldsOtherThan("name", "type", "settings");
+            var name = NullIfEmpty(fields.String("name"));
+            var typeName = NullIfEmpty(fields.String("type"));
             if (name is not null)
             {
                 var nameProblem = name == RobotNode.InstanceName && robot is not null
@@ -263,7 +263,7 @@ public static class GraphFile
                     : graph.CheckName(name);
                 if (nameProblem is not null)
                 {
-                    problems.Add(new GraphProblem($"{at}.name", nameProblem));
+                    problems.Add($"{at}.name", nameProblem);
                     name = null;
                 }
             }
@@ -276,7 +276,7 @@ public static class GraphFile
             var type = catalog.Find(typeName);
             if (type is null)
             {
-                problems.Add(new GraphProblem($"{at}.type", $"unknown plug-in type '{typeName}' (known: {string.Join(", ", catalog.Types.Select(t => t.Name).Order(StringComparer.Ordinal))})"));
+                problems.Add($"{at}.type", $"unknown plug-in type '{typeName}' (known: {string.Join(", ", catalog.Types.Select(t => t.Name).Order(StringComparer.Ordinal))})");
                 continue;
             }
 
@@ -284,9 +284,9 @@ public static class GraphFile
             var settingsJson = item.TryGetProperty("settings", out var s) ? s : default;
             if (type.Settings is not null)
             {
-                var errors = new List<SettingError>();
+                var errors = new List<JsonProblem>();
                 settings = type.Settings.Read(settingsJson, errors);
-                problems.AddRange(errors.Select(e => new GraphProblem(e.Setting.Length == 0 ? $"{at}.settings" : $"{at}.settings.{e.Setting}", e.Message)));
+                AddUnder(problems, errors, $"{at}.settings");
                 if (settings is null)
                 {
                     continue;
@@ -294,7 +294,7 @@ public static class GraphFile
             }
             else if (settingsJson.ValueKind == JsonValueKind.Object && settingsJson.EnumerateObject().Any())
             {
-                problems.Add(new GraphProblem($"{at}.settings", $"plug-in type '{typeName}' has no settings"));
+                problems.Add($"{at}.settings", $"plug-in type '{typeName}' has no settings");
                 continue;
             }
 
@@ -311,20 +311,20 @@ public static class GraphFile
             }
             catch (SettingsException ex)
             {
-                problems.AddRange(ex.Errors.Select(e => new GraphProblem(e.Setting.Length == 0 ? $"{at}.settings" : $"{at}.settings.{e.Setting}", e.Message)));
+                AddUnder(problems, ex.Errors, $"{at}.settings");
             }
 #pragma warning disable CA1031 // a plug-in constructor may fail in any way (missing file, bad robot); report it at the instance
             catch (Exception ex)
 #pragma warning restore CA1031
             {
-                problems.Add(new GraphProblem(at, $"'{name}' ({typeName}) could not be created: {ex.Message}"));
+                problems.Add(at, $"'{name}' ({typeName}) could not be created: {ex.Message}");
             }
         }
 
         return specs;
     }
 
-    private static List<Wire> ReadWires(JsonElement root, PluginGraph graph, List<GraphProblem> problems, HashSet<string> failed)
+    private static List<Wire> ReadWires(JsonElement root, PluginGraph graph, JsonProblemSink problems, HashSet<string> failed)
     {
         var wires = new List<Wire>();
         if (!root.TryGetProperty("wires", out var array))
@@ -334,7 +334,7 @@ public static class GraphFile
 
         if (array.ValueKind != JsonValueKind.Array)
         {
-            problems.Add(new GraphProblem("$.wires", "expected an array of wires"));
+            problems.Add("$.wires", "expected an array of wires");
             return wires;
         }
 
@@ -345,29 +345,15 @@ public static class GraphFile
             var at = string.Create(CultureInfo.InvariantCulture, $"$.wires[{i}]");
             if (item.ValueKind != JsonValueKind.Object)
             {
-                problems.Add(new GraphProblem(at, "expected an object with from, to and optionally delayed"));
+                problems.Add(at, "expected an object with from, to and optionally delayed");
                 continue;
             }
 
-            foreach (var member in item.EnumerateObject().Where(m => m.Name is not ("from" or "to" or "delayed")))
-            {
-                problems.Add(new GraphProblem($"{at}.{member.Name}", "unknown field (known: from, to, delayed)"));
-            }
-
-            var from = RequiredString(item, "from", $"{at}.from", problems);
-            var to = RequiredString(item, "to", $"{at}.to", problems);
-            var delayed = false;
-            if (item.TryGetProperty("delayed", out var d))
-            {
-                if (d.ValueKind is JsonValueKind.True or JsonValueKind.False)
-                {
-                    delayed = d.GetBoolean();
-                }
-                else
-                {
-                    problems.Add(new GraphProblem($"{at}.delayed", "expected true or false"));
-                }
-            }
+            var fields = new JsonFieldReader(problems, item, at, JsonWording.Brief);
+            fields.RejectFieldsOtherThan("from", "to", "delayed");
+            var from = NullIfEmpty(fields.String("from"));
+            var to = NullIfEmpty(fields.String("to"));
+            var delayed = fields.Raw("delayed", required: false) is { } d && (fields.ReadBoolean(d, $"{at}.delayed") ?? false);
 
             if (from is null || to is null)
             {
@@ -395,36 +381,19 @@ public static class GraphFile
                 field = "to";
             }
 
-            problems.Add(new GraphProblem($"{at}.{field}", problem));
+            problems.Add($"{at}.{field}", problem);
         }
 
         return wires;
     }
 
-    private static string? OptionalString(JsonElement obj, string name, string path, List<GraphProblem> problems)
+    private static string? NullIfEmpty(string value) => value.Length == 0 ? null : value;
+
+    private static void AddUnder(JsonProblemSink problems, IEnumerable<JsonProblem> settingProblems, string settingsPath)
     {
-        if (!obj.TryGetProperty(name, out var value) || value.ValueKind == JsonValueKind.Null)
+        foreach (var p in settingProblems.Select(e => e.Under(settingsPath)))
         {
-            return null;
+            problems.Add(p.Path, p.Message);
         }
-
-        if (value.ValueKind != JsonValueKind.String)
-        {
-            problems.Add(new GraphProblem(path, $"expected a string, found {value.ValueKind.ToString().ToLowerInvariant()}"));
-            return null;
-        }
-
-        return value.GetString();
-    }
-
-    private static string? RequiredString(JsonElement obj, string name, string path, List<GraphProblem> problems)
-    {
-        var value = OptionalString(obj, name, path, problems);
-        if (value is null && !problems.Any(p => p.Path == path))
-        {
-            problems.Add(new GraphProblem(path, "is required"));
-        }
-
-        return string.IsNullOrWhiteSpace(value) ? null : value;
     }
 }

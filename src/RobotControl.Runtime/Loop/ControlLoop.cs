@@ -30,9 +30,9 @@ public sealed class ControlLoop : IDisposable
     {
         ArgumentNullException.ThrowIfNull(program);
         ArgumentNullException.ThrowIfNull(time);
-        if (!double.IsFinite(rateHz) || rateHz < 1 || rateHz > 20_000)
+        if (!LoopRate.IsValid(rateHz))
         {
-            throw new ArgumentOutOfRangeException(nameof(rateHz), rateHz, "the loop rate must lie within 1..20000 Hz");
+            throw new ArgumentOutOfRangeException(nameof(rateHz), rateHz, $"the loop rate must lie within {LoopRate.RangeText} Hz");
         }
 
         Program = program;

@@ -4,7 +4,7 @@ using RobotControl.Hardware.Model;
 namespace RobotControl.Analysis.Tests.Sweep;
 
 /// <summary>
-/// Velocity, force and manipulability at configurations worked out by hand from the DH tables (robots.md). With the
+/// Velocity, force and manipulability at configurations worked out by hand from the DH tables (docs/robots.md). With the
 /// shoulder pitch (and LB roll) at 0, both arms lie in the base x-y plane: the upper arm along +x (length L1), the
 /// forearm at angle phi_e (elbow) from it, so the tip is p = (L1 + L2 cos phi_e, L2 sin phi_e, 0). Joint axes: yaw
 /// z = (0, 0, 1) at the origin, pitch (0, -1, 0) at the origin, LB roll (1, 0, 0) at the origin, elbow (0, 0, 1) at

@@ -1,6 +1,6 @@
 using System.Text.Json;
 using RobotControl.Bus.Protocol;
-using RobotControl.Bus.Tests.Support;
+using RobotControl.TestSupport;
 
 namespace RobotControl.Bus.Tests.Protocol;
 
@@ -53,7 +53,7 @@ public sealed class FirmwareVectorTests
     [Fact]
     public void The_embedded_control_table_is_the_firmware_file()
     {
-        var file = ControlTable.Parse(File.ReadAllText(RepoPaths.Firmware("protocol/control-table.json")));
+        var file = ControlTable.Parse(File.ReadAllText(RepositoryPaths.Firmware("protocol/control-table.json")));
         var embedded = ControlTable.Firmware;
         Assert.Equal(file.Fields, embedded.Fields);
         Assert.Equal(0, embedded["model_number"].Address);
@@ -62,7 +62,7 @@ public sealed class FirmwareVectorTests
 
     private static JsonElement[] Load()
     {
-        using var doc = JsonDocument.Parse(File.ReadAllText(RepoPaths.Firmware("protocol/test-vectors.json")));
+        using var doc = JsonDocument.Parse(File.ReadAllText(RepositoryPaths.Firmware("protocol/test-vectors.json")));
         return doc.RootElement.GetProperty("vectors").EnumerateArray().Select(e => e.Clone()).ToArray();
     }
 }

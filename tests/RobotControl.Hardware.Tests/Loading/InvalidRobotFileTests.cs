@@ -1,4 +1,5 @@
 using System.Text.Json.Nodes;
+using RobotControl.Hardware.Json;
 using RobotControl.Hardware.Loading;
 
 namespace RobotControl.Hardware.Tests.Loading;
@@ -32,7 +33,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var json = RobotFiles.Json("crb-1.0.json");
         json.AsObject().Remove("joints");
         var errors = Errors(json);
-        Assert.Contains(errors, e => e.JsonPath == "$.joints" && e.Message.Contains("missing field", StringComparison.Ordinal));
+        Assert.Contains(errors, e => e.Path == "$.joints" && e.Message.Contains("missing field", StringComparison.Ordinal));
     }
 
     [Fact]
@@ -77,8 +78,8 @@ public sealed class InvalidRobotFileTests : IDisposable
         json["joints"]![0]!["min_deg"] = true;
         json["shoulder_cross_section_cm2"] = null;
         var errors = Errors(json);
-        Assert.Contains(errors, e => e.JsonPath == "$.joints[0].min_deg" && e.Message.Contains("must be a number", StringComparison.Ordinal));
-        Assert.Contains(errors, e => e.JsonPath == "$.shoulder_cross_section_cm2" && e.Message.Contains("null", StringComparison.Ordinal));
+        Assert.Contains(errors, e => e.Path == "$.joints[0].min_deg" && e.Message.Contains("must be a number", StringComparison.Ordinal));
+        Assert.Contains(errors, e => e.Path == "$.shoulder_cross_section_cm2" && e.Message.Contains("null", StringComparison.Ordinal));
     }
 
     [Fact]
@@ -89,7 +90,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var ex = Assert.Throws<RobotDataException>(() => RobotLoader.Load(path));
         var error = Assert.Single(ex.Errors);
         Assert.Equal(path, error.File);
-        Assert.Equal("$", error.JsonPath);
+        Assert.Equal("$", error.Path);
         Assert.Contains("not valid JSON", error.Message, StringComparison.Ordinal);
     }
 
@@ -99,7 +100,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var json = RobotFiles.Json("crb-1.0.json");
         json["dh"] = new JsonArray();
         var errors = Errors(json);
-        Assert.Contains(errors, e => e.JsonPath == "$.dh" && e.Message.Contains("empty", StringComparison.Ordinal));
+        Assert.Contains(errors, e => e.Path == "$.dh" && e.Message.Contains("empty", StringComparison.Ordinal));
     }
 
     [Fact]
@@ -126,7 +127,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var json = RobotFiles.Json("crb-1.0.json");
         json["component_catalogs"] = new JsonArray("../components/gearheads.json");
         var errors = Errors(json);
-        Assert.Contains(errors, e => e.JsonPath == "$.actuators[0].drivetrain.motor" && e.Message.Contains("1226 S 012 B", StringComparison.Ordinal));
+        Assert.Contains(errors, e => e.Path == "$.actuators[0].drivetrain.motor" && e.Message.Contains("1226 S 012 B", StringComparison.Ordinal));
     }
 
     [Fact]
@@ -135,7 +136,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var json = RobotFiles.Json("crb-1.0.json");
         json["dh"]![3]!["joint"] = "wrist";
         var errors = Errors(json);
-        Assert.Contains(errors, e => e.JsonPath == "$.dh[3].joint" && e.Message.Contains("\"wrist\"", StringComparison.Ordinal) && e.Message.Contains("does not define", StringComparison.Ordinal));
+        Assert.Contains(errors, e => e.Path == "$.dh[3].joint" && e.Message.Contains("\"wrist\"", StringComparison.Ordinal) && e.Message.Contains("does not define", StringComparison.Ordinal));
     }
 
     [Fact]
@@ -145,8 +146,8 @@ public sealed class InvalidRobotFileTests : IDisposable
         json["actuators"]![2]!["drivetrain"]!["gearhead_series"] = "08/1";
         json["actuators"]![1]!["coupling"]!["shoulder_roll"] = 1;
         var errors = Errors(json);
-        Assert.Contains(errors, e => e.JsonPath == "$.actuators[2].drivetrain.gearhead_series");
-        Assert.Contains(errors, e => e.JsonPath == "$.actuators[1].coupling.shoulder_roll");
+        Assert.Contains(errors, e => e.Path == "$.actuators[2].drivetrain.gearhead_series");
+        Assert.Contains(errors, e => e.Path == "$.actuators[1].coupling.shoulder_roll");
     }
 
     [Fact]
@@ -163,7 +164,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var json = RobotFiles.Json("crb-1.0.json");
         json["actuators"]![1]!["joint"] = "shoulder_yaw";
         var errors = Errors(json);
-        Assert.Contains(errors, e => e.JsonPath == "$.actuators[1].joint" && e.Message.Contains("already listed", StringComparison.Ordinal));
+        Assert.Contains(errors, e => e.Path == "$.actuators[1].joint" && e.Message.Contains("already listed", StringComparison.Ordinal));
     }
 
     [Fact]
@@ -181,7 +182,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var ex = Assert.Throws<RobotDataException>(() => RobotLoader.Load(path));
         var error = Assert.Single(ex.Errors);
         Assert.Equal(path, error.File);
-        Assert.Equal("$", error.JsonPath);
+        Assert.Equal("$", error.Path);
         Assert.Contains("not valid JSON", error.Message, StringComparison.Ordinal);
         Assert.StartsWith(path + ": $: not valid JSON", ex.Message, StringComparison.Ordinal);
     }
@@ -204,7 +205,7 @@ public sealed class InvalidRobotFileTests : IDisposable
         var ex = Assert.Throws<RobotDataException>(() => RobotLoader.Load(path));
         var error = Assert.Single(ex.Errors);
         Assert.Equal(_files.Catalogue("motors.json"), error.File);
-        Assert.Equal("$.motors[1].stall_torque_mNm", error.JsonPath);
+        Assert.Equal("$.motors[1].stall_torque_mNm", error.Path);
     }
 
     [Fact]
@@ -215,25 +216,25 @@ public sealed class InvalidRobotFileTests : IDisposable
         json["joints"]![2]!["min_deg"] = 120;
         json["actuators"]![0]!["drivetrain"]!["motor"] = "none";
         var ex = Assert.Throws<RobotDataException>(() => RobotLoader.Load(_files.Write(json)));
-        Assert.Equal(["$.actuators[0].drivetrain.motor", "$.dh[2].a_mm", "$.joints[2].min_deg"], ex.Errors.Select(e => e.JsonPath).Order());
+        Assert.Equal(["$.actuators[0].drivetrain.motor", "$.dh[2].a_mm", "$.joints[2].min_deg"], ex.Errors.Select(e => e.Path).Order());
         Assert.Contains("3 problems", ex.Message, StringComparison.Ordinal);
     }
 
-    private IReadOnlyList<DataError> Errors(JsonNode json)
+    private IReadOnlyList<JsonProblem> Errors(JsonNode json)
     {
         var path = _files.Write(json);
         var ex = Assert.Throws<RobotDataException>(() => RobotLoader.Load(path));
         Assert.NotEmpty(ex.Errors);
         Assert.All(ex.Errors, e => Assert.Equal(path, e.File));
-        Assert.All(ex.Errors, e => Assert.Contains($"{e.File}: {e.JsonPath}: {e.Message}", ex.Message, StringComparison.Ordinal));
+        Assert.All(ex.Errors, e => Assert.Contains($"{e.File}: {e.Path}: {e.Message}", ex.Message, StringComparison.Ordinal));
         return ex.Errors;
     }
 
-    private DataError AssertSingleError(JsonNode json, string jsonPath, string problem)
+    private JsonProblem AssertSingleError(JsonNode json, string jsonPath, string problem)
     {
         var errors = Errors(json);
         var error = Assert.Single(errors);
-        Assert.Equal(jsonPath, error.JsonPath);
+        Assert.Equal(jsonPath, error.Path);
         Assert.Contains(problem, error.Message, StringComparison.Ordinal);
         return error;
     }

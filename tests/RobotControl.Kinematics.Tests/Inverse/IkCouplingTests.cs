@@ -4,7 +4,7 @@ using RobotControl.Kinematics.Inverse;
 
 namespace RobotControl.Kinematics.Tests.Inverse;
 
-/// <summary>IK answers mapped through the shoulder coupling (JointMotorMap) obey robots.md's equations.</summary>
+/// <summary>IK answers mapped through the shoulder coupling (JointMotorMap) obey docs/robots.md's equations.</summary>
 public sealed class IkCouplingTests
 {
     [Fact]

@@ -107,7 +107,7 @@ public sealed class IkErrorFunctionTests
             var after = CyclicCoordinateDescent.Cycle(problem, q);
             Assert.True(after <= before + 1e-9);
 
-            // The textbook cycle: frames recomputed after every joint, k1..k3 exactly as algorithms.md writes them.
+            // The textbook cycle: frames recomputed after every joint, k1..k3 exactly as docs/algorithms.md writes them.
             for (var i = chain.JointCount - 1; i >= 0; i--)
             {
                 state.Update(reference);

@@ -1,5 +1,6 @@
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Tests.Support;
+using RobotControl.TestSupport;
 
 namespace RobotControl.Runtime.Tests.Graph;
 

@@ -46,6 +46,47 @@ public sealed class GraphFileTests
     }
 
     [Fact]
+    public void Save_then_load_gives_the_same_graph()
+    {
+        var robot = Repo.Path("hardware/robots/lb-1.0.json").Replace("\\", "/", StringComparison.Ordinal);
+        var json = $$"""
+            {
+              "schema": "robotcontrol/graph/1",
+              "robot": "{{robot}}",
+              "transport": "virtual",
+              "loop_rate_hz": 250,
+              "instances": [
+                { "name": "a", "type": "example", "settings": { "ratio": 0.5, "reference_x_mm": -7.25, "mode": "hold_last_finite" } },
+                { "name": "b", "type": "example" }
+              ],
+              "wires": [
+                { "from": "a.out", "to": "b.in" },
+                { "from": "b.out", "to": "a.in", "delayed": true }
+              ]
+            }
+            """;
+        var folder = Directory.CreateTempSubdirectory("graph-save-");
+        try
+        {
+            var first = GraphFile.LoadFromText(json, Path.Combine(folder.FullName, "written.json"), Catalog, TimeProvider.System).Document;
+            var file = Path.Combine(folder.FullName, "saved.json");
+            GraphFile.Save(first, file);
+            var second = GraphFile.Load(file, Catalog, TimeProvider.System).Document;
+
+            Assert.Equal(first.Robot, second.Robot);
+            Assert.Equal(first.Transport, second.Transport);
+            Assert.Equal(first.LoopRateHz, second.LoopRateHz);
+            Assert.Equal(first.Instances, second.Instances);
+            Assert.Equal(first.Wires.Select(w => (w.From, w.To, w.Delayed)), second.Wires.Select(w => (w.From, w.To, w.Delayed)));
+            Assert.Equal(-7.25, ((ExampleSettings)second.Instances[0].Settings!).ReferenceXMm);
+        }
+        finally
+        {
+            folder.Delete(recursive: true);
+        }
+    }
+
+    [Fact]
     public void Every_problem_is_reported_with_its_json_path()
     {
         const string json = """

@@ -6,6 +6,7 @@ using RobotControl.Plugins.Standard.Recording;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Tests.Support;
+using RobotControl.TestSupport;
 
 namespace RobotControl.Runtime.Tests.Plugins;
 

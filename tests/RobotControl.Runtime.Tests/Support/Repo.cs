@@ -1,28 +1,16 @@
-using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
+using RobotControl.TestSupport;
 
 namespace RobotControl.Runtime.Tests.Support;
 
+/// <summary>Short names for the shared fixtures (<see cref="RepositoryPaths"/>, <see cref="ShippedRobots"/>).</summary>
 internal static class Repo
 {
-    public static string Root { get; } = FindRoot();
+    public static string Root => RepositoryPaths.Root;
 
-    public static string Path(string relative) => System.IO.Path.Combine(Root, relative);
+    public static string Path(string relative) => RepositoryPaths.Of(relative);
 
-    public static RobotDefinition Lb { get; } = RobotLoader.Load(Path("hardware/robots/lb-1.0.json"));
+    public static RobotDefinition Lb => ShippedRobots.Lb;
 
-    public static RobotDefinition Crb { get; } = RobotLoader.Load(Path("hardware/robots/crb-1.0.json"));
-
-    private static string FindRoot()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            if (File.Exists(System.IO.Path.Combine(dir.FullName, "RobotControl.sln")))
-            {
-                return dir.FullName;
-            }
-        }
-
-        throw new InvalidOperationException("repository root not found");
-    }
+    public static RobotDefinition Crb => ShippedRobots.Crb;
 }

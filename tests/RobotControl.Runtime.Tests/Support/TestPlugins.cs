@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Plugins.Sdk.Settings;
@@ -84,11 +85,11 @@ internal sealed record ExampleSettings : PluginSettings
     [Setting("Script file.", IsFilePath = true, Required = true)]
     public string Script { get; init; } = "script.csv";
 
-    public override IEnumerable<SettingError> CheckConsistency()
+    public override IEnumerable<JsonProblem> CheckConsistency()
     {
         if (Samples > 5 && Ratio > 0.9)
         {
-            yield return new SettingError("samples", "more than 5 samples need a ratio of at most 0.9");
+            yield return new JsonProblem("samples", "more than 5 samples need a ratio of at most 0.9");
         }
     }
 }

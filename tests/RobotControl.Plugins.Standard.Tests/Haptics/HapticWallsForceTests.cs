@@ -1,0 +1,32 @@
+using RobotControl.Plugins.Sdk;
+using RobotControl.Plugins.Standard.Haptics;
+using RobotControl.TestSupport;
+
+namespace RobotControl.Plugins.Standard.Tests.Haptics;
+
+public sealed class HapticWallsForceTests
+{
+    // A device displacement d moves the robot by ratio * d, so a workspace stiffness felt at the handle is the robot's
+    // divided by the ratio: F_device = gain * F_robot / ratio (then expressed in the device frame). Ratio 0.25 and
+    // gain 2 make the factor 8; the expected values below are worked out by hand.
+    [Fact]
+    public void The_force_is_the_workspace_force_times_gain_over_ratio_in_an_aligned_frame()
+    {
+        var walls = new PluginDriver(new HapticWallsPlugin(new HapticWallsSettings { ScaleRatio = 0.25, Gain = 2, MaxForceN = 10 }, PluginContext.Standalone("w")));
+        walls.Set(("fx", 0.1), ("fy", -0.05), ("fz", 0.02)).Tick();
+        Assert.Equal(0.8, walls["fx"], 12);
+        Assert.Equal(-0.4, walls["fy"], 12);
+        Assert.Equal(0.16, walls["fz"], 12);
+    }
+
+    [Fact]
+    public void The_force_is_the_workspace_force_times_gain_over_ratio_in_a_rolled_frame()
+    {
+        // Roll 90 deg (as the homing plug-in): robot x -> device x, robot z -> device y, robot y -> device -z.
+        var walls = new PluginDriver(new HapticWallsPlugin(new HapticWallsSettings { RollDeg = 90, ScaleRatio = 0.25, Gain = 2, MaxForceN = 10 }, PluginContext.Standalone("w")));
+        walls.Set(("fx", 0.1), ("fy", -0.05), ("fz", 0.02)).Tick();
+        Assert.Equal(0.8, walls["fx"], 12);
+        Assert.Equal(0.16, walls["fy"], 12);
+        Assert.Equal(0.4, walls["fz"], 12);
+    }
+}

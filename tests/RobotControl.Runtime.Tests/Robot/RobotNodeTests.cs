@@ -1,0 +1,70 @@
+using RobotControl.Plugins.Sdk;
+using RobotControl.Plugins.Sdk.Ports;
+using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.Robot;
+using RobotControl.Runtime.Tests.Support;
+using RobotControl.TestSupport;
+
+namespace RobotControl.Runtime.Tests.Robot;
+
+public sealed class RobotNodeTests
+{
+    private sealed class ElbowSource : Plugin
+    {
+        private readonly OutputPort _elbow;
+        private readonly long _throwAt;
+
+        public ElbowSource(long throwAt)
+            : base(PluginContext.Standalone("src"))
+        {
+            _throwAt = throwAt;
+            _elbow = DeclareOutput("elbow", SafeValue.HoldLastFinite, "rad");
+        }
+
+        public override void Tick(in TickContext context)
+        {
+            if (context.Index == _throwAt)
+            {
+                throw new InvalidOperationException("source broke");
+            }
+
+            Write(_elbow, 0.5 + (0.001 * context.Index));
+        }
+    }
+
+    [Fact]
+    public void The_robot_shows_its_joints_as_inputs_and_positions_currents_faults_as_outputs()
+    {
+        var node = new RobotNode(Repo.Lb, TimeProvider.System, Repo.Root);
+
+        Assert.Contains(node.Inputs, p => p.Name == "right.elbow" && p.Units == "rad");
+        Assert.Contains(node.Inputs, p => p.Name == "left.jaw");
+        Assert.Contains(node.Outputs, p => p.Name == "left.shoulder_roll.position");
+        Assert.Contains(node.Outputs, p => p.Name == "right.tool_open_close.current" && p.Units == "A");
+        Assert.Contains(node.Outputs, p => p.Name == "faults");
+    }
+
+    [Fact]
+    public void When_an_upstream_plugin_faults_the_robot_holds_position_and_is_sent_nothing_more()
+    {
+        var port = new KinematicRobotPort(Repo.Lb);
+        var node = new RobotNode(Repo.Lb, TimeProvider.System, Repo.Root);
+        node.Attach(port);
+        var graph = new PluginGraph();
+        graph.Add(node);
+        graph.Add(new ElbowSource(throwAt: 10));
+        graph.Connect("src.elbow", "robot.right.elbow");
+        node.SetDriven(graph.Wires.Select(w => w.To));
+        var program = graph.Compile();
+
+        Ticks.Run(program, 20);
+
+        Assert.Equal(10, port.Writes); // ticks 0..9 only
+        Assert.Equal(1, port.Holds);
+        Assert.True(node.Holding);
+        var q = new double[5];
+        port.ReadJointPositions(0, q);
+        Assert.Equal(0.509, q[3], 9); // where tick 9 put it
+        Assert.Equal(Repo.Lb.Joints[0].MidRad, q[0], 9); // unwired joints kept the position read at start
+    }
+}
