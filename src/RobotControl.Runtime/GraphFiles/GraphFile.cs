@@ -30,8 +30,16 @@ public static class GraphFile
 
     /// <summary>Loads, builds and compiles the graph in <paramref name="path"/>.</summary>
     /// <exception cref="GraphException">Every problem found, with JSON paths.</exception>
-    public static LoadedGraph Load(string path, PluginCatalog catalog, TimeProvider time)
+    public static LoadedGraph Load(string path, PluginCatalog catalog, TimeProvider time) => Load(path, catalog, time, []);
+
+    /// <summary>
+    /// Loads the graph in <paramref name="path"/> with <paramref name="overrides"/> (<c>--set</c>) applied to its
+    /// settings first (<see cref="GraphSettingOverrides"/>), validated as if the file held them.
+    /// </summary>
+    /// <exception cref="GraphException">Every problem found, with JSON paths.</exception>
+    public static LoadedGraph Load(string path, PluginCatalog catalog, TimeProvider time, IReadOnlyList<SettingOverride> overrides)
     {
+        ArgumentNullException.ThrowIfNull(overrides);
         ArgumentException.ThrowIfNullOrEmpty(path);
         var fullPath = Path.GetFullPath(path);
         string text;
@@ -44,7 +52,7 @@ public static class GraphFile
             throw new GraphException([new GraphProblem("$", $"cannot read the file: {ex.Message}")], fullPath);
         }
 
-        return LoadFromText(text, fullPath, catalog, time);
+        return LoadFromText(GraphSettingOverrides.Apply(text, overrides, catalog ?? throw new ArgumentNullException(nameof(catalog)), fullPath), fullPath, catalog, time);
     }
 
     /// <summary>Loads a graph from JSON text; relative paths resolve against <paramref name="virtualPath"/>'s folder.</summary>
