@@ -165,6 +165,12 @@ internal sealed class FakeCoppeliaSim : IDisposable
                 continue;
             }
 
+            if (func == "test.end")
+            {
+                socket.SendFrame(Reply("func", RemoteApiWords.End, "args", new List<object?>()));
+                continue;
+            }
+
             if (func == "test.callback")
             {
                 pending = new Dictionary<string, object?> { ["ret"] = new List<object?> { "called back" } };

@@ -85,6 +85,17 @@ public sealed class RemoteApiClientTests
     }
 
     [Fact]
+    public void End_reply_ends_the_session_and_the_next_call_connects_again()
+    {
+        using var server = new FakeCoppeliaSim(Joints);
+        using var client = new RemoteApiClient(server.Endpoint, TimeSpan.FromSeconds(2));
+        var ex = Assert.Throws<CoppeliaSimConnectionException>(() => client.Call("test.end"));
+        Assert.Equal($"test.end: the server ended the session ({server.Endpoint})", ex.Message);
+        Assert.Equal(-1, new SimApi(client).GetObject("/LB1/missing", noError: true));
+        Assert.Equal(2, client.Connections);
+    }
+
+    [Fact]
     public void Server_error_surfaces_with_the_servers_message()
     {
         using var server = new FakeCoppeliaSim(Joints);

@@ -40,11 +40,14 @@ public static class UrdfExport
         return new XDocument(new XDeclaration("1.0", "utf-8", null), root);
     }
 
-    /// <summary>Writes the URDF of <paramref name="robot"/> to <paramref name="writer"/>.</summary>
+    /// <summary>Writes the URDF of <paramref name="robot"/> to <paramref name="writer"/> (declared UTF-8, as files and standard output carry it).</summary>
     public static void Write(RobotDefinition robot, TextWriter writer)
     {
         ArgumentNullException.ThrowIfNull(writer);
-        var settings = new XmlWriterSettings { Indent = true, IndentChars = "  ", OmitXmlDeclaration = false };
+
+        // An XmlWriter declares the TextWriter's encoding (UTF-16 for a StringWriter); the text is written out as UTF-8.
+        writer.WriteLine("<?xml version=\"1.0\" encoding=\"utf-8\"?>");
+        var settings = new XmlWriterSettings { Indent = true, IndentChars = "  ", OmitXmlDeclaration = true };
         using (var xml = XmlWriter.Create(writer, settings))
         {
             ToDocument(robot).Save(xml);

@@ -1,6 +1,4 @@
 using System.CommandLine;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
 using RobotControl.Kinematics.Urdf;
 
 namespace RobotControl.Cli.Commands.Kinematics;
@@ -30,14 +28,8 @@ internal sealed class UrdfCommand : ICliCommand
     /// <summary>Runs the command; returns the exit code (0 ok, 2 bad input or unwritable output).</summary>
     internal static int Run(string robotPath, string? outPath, TextWriter output, TextWriter error)
     {
-        RobotDefinition robot;
-        try
+        if (RobotFiles.LoadOrReport(robotPath, error) is not { } robot)
         {
-            robot = RobotLoader.Load(robotPath);
-        }
-        catch (RobotDataException ex)
-        {
-            error.WriteLine(ex.Message);
             return 2;
         }
 
