@@ -52,7 +52,20 @@ public static class GraphFile
             throw new GraphException([new GraphProblem("$", $"cannot read the file: {ex.Message}")], fullPath);
         }
 
-        return LoadFromText(GraphSettingOverrides.Apply(text, overrides, catalog ?? throw new ArgumentNullException(nameof(catalog)), fullPath), fullPath, catalog, time);
+        ArgumentNullException.ThrowIfNull(catalog);
+        var overrideProblems = new List<GraphProblem>();
+        var overridden = GraphSettingOverrides.Apply(text, overrides, catalog, fullPath, overrideProblems);
+        LoadedGraph loaded;
+        try
+        {
+            loaded = LoadFromText(overridden, fullPath, catalog, time);
+        }
+        catch (GraphException ex) when (overrideProblems.Count > 0)
+        {
+            throw new GraphException([.. overrideProblems, .. ex.Problems], fullPath);
+        }
+
+        return overrideProblems.Count == 0 ? loaded : throw new GraphException(overrideProblems, fullPath);
     }
 
     /// <summary>Loads a graph from JSON text; relative paths resolve against <paramref name="virtualPath"/>'s folder.</summary>

@@ -11,19 +11,24 @@ namespace RobotControl.Runtime.GraphFiles;
 /// Applies <c>--set</c> overrides to a graph file's JSON before it is loaded, so an overridden value is checked by the
 /// same loader, with the same messages and JSON paths, as a value written in the file. A value is written as a JSON
 /// number or boolean when the setting is of that kind and the text reads as one, otherwise as a string (which the
-/// loader then reports as the wrong type). Nothing is applied unless every override names an instance of the file.
+/// loader then reports as the wrong type). An override naming no instance of the file is a problem of its own,
+/// reported together with the loader's (<see cref="GraphFile.Load(string, PluginCatalog, TimeProvider, IReadOnlyList{SettingOverride})"/>).
 /// </summary>
 public static class GraphSettingOverrides
 {
     private static readonly JsonDocumentOptions DocumentOptions = new() { CommentHandling = JsonCommentHandling.Skip };
 
-    /// <summary>The graph JSON with <paramref name="overrides"/> applied (the text unchanged when there are none).</summary>
-    /// <exception cref="GraphException">The JSON is not a graph with an instances array, or an override names no instance.</exception>
-    public static string Apply(string json, IReadOnlyList<SettingOverride> overrides, PluginCatalog catalog, string path)
+    /// <summary>
+    /// The graph JSON with <paramref name="overrides"/> applied (the text unchanged when there are none); an override
+    /// that names no instance is added to <paramref name="problems"/> and not applied.
+    /// </summary>
+    /// <exception cref="GraphException">The JSON is not a graph with an instances array.</exception>
+    public static string Apply(string json, IReadOnlyList<SettingOverride> overrides, PluginCatalog catalog, string path, ICollection<GraphProblem> problems)
     {
         ArgumentNullException.ThrowIfNull(json);
         ArgumentNullException.ThrowIfNull(overrides);
         ArgumentNullException.ThrowIfNull(catalog);
+        ArgumentNullException.ThrowIfNull(problems);
         if (overrides.Count == 0)
         {
             return json;
@@ -44,7 +49,6 @@ public static class GraphSettingOverrides
             throw new GraphException([new GraphProblem("$.instances", "the graph has no instances array to apply --set to")], path);
         }
 
-        var problems = new List<GraphProblem>();
         foreach (var item in overrides)
         {
             var instance = instances.OfType<JsonObject>().FirstOrDefault(i => i["name"] is JsonValue v && v.TryGetValue<string>(out var n) && n == item.Instance);
@@ -62,11 +66,6 @@ public static class GraphSettingOverrides
             }
 
             settings[item.Setting] = Value(item, instance, catalog);
-        }
-
-        if (problems.Count > 0)
-        {
-            throw new GraphException(problems, path);
         }
 
         return root.ToJsonString();

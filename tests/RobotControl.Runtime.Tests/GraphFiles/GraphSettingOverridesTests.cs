@@ -65,9 +65,20 @@ public sealed class GraphSettingOverridesTests
     }
 
     [Fact]
+    public void An_unknown_instance_is_reported_with_the_loaders_problems()
+    {
+        var problems = Assert.Throws<GraphException>(() => Load("ghost.x=1", "a.ratio=5")).Problems.Select(p => p.ToString()).ToList();
+        Assert.Equal(2, problems.Count);
+        Assert.Equal("--set ghost.x=1: no instance named 'ghost' (instances: a, b)", problems[0]);
+        Assert.StartsWith("$.instances[0].settings.ratio: 5 is outside 0.05..1", problems[1], StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void Without_overrides_the_text_is_untouched()
     {
-        Assert.Same(Graph, GraphSettingOverrides.Apply(Graph, [], Catalog, "/tmp/g.json"));
+        var problems = new List<GraphProblem>();
+        Assert.Same(Graph, GraphSettingOverrides.Apply(Graph, [], Catalog, "/tmp/g.json", problems));
+        Assert.Empty(problems);
     }
 
     [Theory]
