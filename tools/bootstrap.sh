@@ -13,6 +13,8 @@ command -v cmake >/dev/null 2>&1 || need+=(cmake)
 # The analysis maps' font (src/RobotControl.Analysis/Plotting/PlotFont.cs); SkiaSharp's NoDependencies build has no
 # fontconfig and finds no text font without it.
 [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf ] || need+=(fonts-dejavu-core)
+# check_urdf validates the URDF that `robotctl urdf` writes (tests/RobotControl.Kinematics.Tests/Urdf).
+command -v check_urdf >/dev/null 2>&1 || need+=(liburdfdom-tools)
 
 if [ ${#need[@]} -gt 0 ]; then
   echo "bootstrap: installing ${need[*]}"

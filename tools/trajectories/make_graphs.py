@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Writes graphs/teleop-lb.json and graphs/teleop-crb.json: two simulated Touch devices replay the demonstration
+"""Writes graphs/teleop-lb.json, graphs/teleop-crb.json and graphs/teleop-lb-coppeliasim.json: two simulated Touch devices replay the demonstration
 trajectories through homing (left arm mirrored), scaling, clutch and IK into the robot; the IK's workspace force goes
 back through the haptic walls and damping to the device one tick later. The homing origin is the tool position of
-the IK's start pose (forward kinematics below, the same DH convention as the robot files)."""
+the IK's start pose (forward kinematics below, the same DH convention as the robot files). The CoppeliaSim variant
+also wires the IK's joint outputs into one CoppeliaSim bridge instance, `sim`, which drives the imported model."""
 import json, math, os
 
 ROBOTS = {
@@ -63,9 +64,21 @@ def graph(name, r):
            "instances": instances, "wires": wires}
     return doc
 
+def coppeliasim_graph(name, r):
+    doc = graph(name, r)
+    doc["instances"].append({"name": "sim", "type": "coppeliasim", "settings": {
+        "endpoint": "tcp://127.0.0.1:23000", "model": "/LB1", "mode": "kinematic", "stepping": False, "ticks_per_step": 50}})
+    for side in ("right", "left"):
+        for j in r["joints"]:
+            doc["wires"].append({"from": f"ik_{side}.{j}", "to": f"sim.{side}.{j}"})
+    return doc
+
 if __name__ == "__main__":
     out = os.path.join(os.path.dirname(__file__), "..", "..", "graphs")
     for name, r in ROBOTS.items():
         with open(os.path.join(out, f"teleop-{name}.json"), "w") as f:
             json.dump(graph(name, r), f, indent=2)
             f.write("\n")
+    with open(os.path.join(out, "teleop-lb-coppeliasim.json"), "w") as f:
+        json.dump(coppeliasim_graph("lb", ROBOTS["lb"]), f, indent=2)
+        f.write("\n")

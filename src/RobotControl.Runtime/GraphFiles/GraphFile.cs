@@ -32,8 +32,16 @@ public static class GraphFile
 
     /// <summary>Loads, builds and compiles the graph in <paramref name="path"/>.</summary>
     /// <exception cref="GraphException">Every problem found, with JSON paths.</exception>
-    public static LoadedGraph Load(string path, PluginCatalog catalog, TimeProvider time)
+    public static LoadedGraph Load(string path, PluginCatalog catalog, TimeProvider time) => Load(path, catalog, time, []);
+
+    /// <summary>
+    /// Loads the graph in <paramref name="path"/> with <paramref name="overrides"/> (<c>--set</c>) applied to its
+    /// settings first (<see cref="GraphSettingOverrides"/>), validated as if the file held them.
+    /// </summary>
+    /// <exception cref="GraphException">Every problem found, with JSON paths.</exception>
+    public static LoadedGraph Load(string path, PluginCatalog catalog, TimeProvider time, IReadOnlyList<SettingOverride> overrides)
     {
+        ArgumentNullException.ThrowIfNull(overrides);
         ArgumentException.ThrowIfNullOrEmpty(path);
         var fullPath = Path.GetFullPath(path);
         string text;
@@ -46,7 +54,20 @@ public static class GraphFile
             throw new GraphException([new JsonProblem("$", $"cannot read the file: {ex.Message}")], fullPath);
         }
 
-        return LoadFromText(text, fullPath, catalog, time);
+        ArgumentNullException.ThrowIfNull(catalog);
+        var overrideProblems = new List<GraphProblem>();
+        var overridden = GraphSettingOverrides.Apply(text, overrides, catalog, fullPath, overrideProblems);
+        LoadedGraph loaded;
+        try
+        {
+            loaded = LoadFromText(overridden, fullPath, catalog, time);
+        }
+        catch (GraphException ex) when (overrideProblems.Count > 0)
+        {
+            throw new GraphException([.. overrideProblems, .. ex.Problems], fullPath);
+        }
+
+        return overrideProblems.Count == 0 ? loaded : throw new GraphException(overrideProblems, fullPath);
     }
 
     /// <summary>Loads a graph from JSON text; relative paths resolve against <paramref name="virtualPath"/>'s folder.</summary>

@@ -69,7 +69,7 @@ public static class HeadlessRun
     private static RunReport RunVirtual(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
     {
         var clock = new ManualTimeProvider();
-        var loaded = GraphFile.Load(options.GraphPath, catalog, clock);
+        var loaded = GraphFile.Load(options.GraphPath, catalog, clock, options.SettingOverrides);
         var robot = loaded.Robot ?? throw new InvalidOperationException($"{loaded.Path}: the graph names no robot file");
         var node = loaded.RobotNode!;
         var faults = new List<FaultEntry>();
@@ -130,7 +130,7 @@ public static class HeadlessRun
         }
 
         var clock = TimeProvider.System;
-        var loaded = GraphFile.Load(options.GraphPath, catalog, clock);
+        var loaded = GraphFile.Load(options.GraphPath, catalog, clock, options.SettingOverrides);
         var robot = loaded.Robot ?? throw new InvalidOperationException($"{loaded.Path}: the graph names no robot file");
         var transport = loaded.Document.Transport;
         if (transport.StartsWith("virtual", StringComparison.OrdinalIgnoreCase))

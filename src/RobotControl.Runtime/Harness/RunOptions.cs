@@ -23,6 +23,9 @@ public sealed record RunOptions
 
     /// <summary>How often (loop time) progress is reported.</summary>
     public TimeSpan ProgressInterval { get; init; } = TimeSpan.FromMilliseconds(250);
+
+    /// <summary>Settings of graph instances replaced for this run (<c>--set</c>), validated as the file's own.</summary>
+    public IReadOnlyList<GraphFiles.SettingOverride> SettingOverrides { get; init; } = [];
 }
 
 /// <summary>A progress sample of a running harness.</summary>

@@ -1,6 +1,5 @@
 using System.CommandLine;
 using System.Globalization;
-using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using RobotControl.Kinematics.ClosedForm;
 using RobotControl.Kinematics.Coupling;
@@ -40,14 +39,8 @@ internal sealed class FkCommand : ICliCommand
     /// <summary>Runs the command; returns the exit code (0 ok, 2 bad input).</summary>
     internal static int Run(string robotPath, string? jointsDeg, TextWriter output, TextWriter error)
     {
-        RobotDefinition robot;
-        try
+        if (RobotFiles.LoadOrReport(robotPath, error) is not { } robot)
         {
-            robot = RobotLoader.Load(robotPath);
-        }
-        catch (RobotDataException ex)
-        {
-            error.WriteLine(ex.Message);
             return 2;
         }
 

@@ -3,10 +3,12 @@ using System.Globalization;
 using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
 using RobotControl.Hardware.Loading;
+using RobotControl.Plugins.CoppeliaSim;
 using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.GraphFiles;
 using RobotControl.Runtime.Harness;
 using Spectre.Console;
 
@@ -14,7 +16,7 @@ namespace RobotControl.Cli.Commands.Run;
 
 /// <summary>
 /// <c>robotctl run &lt;graph&gt; [--virtual] [--duration 20s] [--report report.json] [--inject ber=1e-5,reset=right.shoulder@5s]
-/// [--plugins dir] [--seed n]</c>: the headless harness. Loads the graph, runs it against the virtual robot (running
+/// [--plugins dir] [--seed n] [--set instance.setting=value ...]</c>: the headless harness. Loads the graph, runs it against the virtual robot (running
 /// the firmware, on a virtual clock) or the graph's transport, shows progress, prints a summary and writes the report.
 /// </summary>
 internal sealed class RunCommand : ICliCommand
@@ -32,6 +34,7 @@ internal sealed class RunCommand : ICliCommand
         var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: ber=<bit error rate>, reset=<arm.location|id>@<time> (comma-separated)" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (one load context each)" };
         var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
+        var set = new Option<string[]>("--set") { Description = "Override a setting of a graph instance for this run, e.g. sim.endpoint=tcp://127.0.0.1:23456 (repeatable)", Arity = ArgumentArity.ZeroOrMore };
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
         command.Arguments.Add(graph);
         command.Options.Add(isVirtual);
@@ -40,6 +43,7 @@ internal sealed class RunCommand : ICliCommand
         command.Options.Add(inject);
         command.Options.Add(plugins);
         command.Options.Add(seed);
+        command.Options.Add(set);
         command.SetAction(parse => Run(
             parse.GetValue(graph)!.FullName,
             parse.GetValue(isVirtual),
@@ -48,15 +52,16 @@ internal sealed class RunCommand : ICliCommand
             parse.GetValue(inject),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
+            parse.GetValue(set) ?? [],
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
     }
 
-    /// <summary>The catalogue of the host's plug-in types (standard and Touch), plus a plug-ins folder.</summary>
+    /// <summary>The catalogue of the host's plug-in types (standard, Touch, CoppeliaSim), plus a plug-ins folder.</summary>
     internal static PluginCatalog Catalog(string? pluginsFolder)
     {
-        var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
+        var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly, typeof(CoppeliaSimPlugin).Assembly);
         if (pluginsFolder is not null)
         {
             catalog.AddFolder(pluginsFolder);
@@ -66,7 +71,7 @@ internal sealed class RunCommand : ICliCommand
     }
 
     /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
-    internal static int Run(string graphPath, bool isVirtual, TimeSpan duration, string? reportPath, string? injectText, string? pluginsFolder, int seed, TextWriter output, TextWriter error)
+    internal static int Run(string graphPath, bool isVirtual, TimeSpan duration, string? reportPath, string? injectText, string? pluginsFolder, int seed, IReadOnlyList<string> settingOverrides, TextWriter output, TextWriter error)
     {
         var catalog = Catalog(pluginsFolder);
         foreach (var problem in catalog.Problems)
@@ -84,6 +89,7 @@ internal sealed class RunCommand : ICliCommand
                 Duration = duration,
                 Inject = FaultInjection.Parse(injectText),
                 Seed = seed,
+                SettingOverrides = [.. settingOverrides.Select(SettingOverride.Parse)],
             };
             RunPreflight.Check(options, catalog);
         }

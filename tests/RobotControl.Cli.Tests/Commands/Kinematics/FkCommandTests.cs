@@ -5,7 +5,7 @@ namespace RobotControl.Cli.Tests.Commands.Kinematics;
 
 public sealed class FkCommandTests
 {
-    private static string RobotFile(string name)
+    internal static string RobotFile(string name)
     {
         for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
         {

@@ -1,0 +1,87 @@
+using System.Globalization;
+using System.Text.Json;
+using System.Text.Json.Nodes;
+using RobotControl.Plugins.Sdk.Settings;
+using RobotControl.Runtime.Discovery;
+using RobotControl.Runtime.Graph;
+
+namespace RobotControl.Runtime.GraphFiles;
+
+/// <summary>
+/// Applies <c>--set</c> overrides to a graph file's JSON before it is loaded, so an overridden value is checked by the
+/// same loader, with the same messages and JSON paths, as a value written in the file. A value is written as a JSON
+/// number or boolean when the setting is of that kind and the text reads as one, otherwise as a string (which the
+/// loader then reports as the wrong type). An override naming no instance of the file is a problem of its own,
+/// reported together with the loader's (<see cref="GraphFile.Load(string, PluginCatalog, TimeProvider, IReadOnlyList{SettingOverride})"/>).
+/// </summary>
+public static class GraphSettingOverrides
+{
+    private static readonly JsonDocumentOptions DocumentOptions = new() { CommentHandling = JsonCommentHandling.Skip };
+
+    /// <summary>
+    /// The graph JSON with <paramref name="overrides"/> applied (the text unchanged when there are none); an override
+    /// that names no instance is added to <paramref name="problems"/> and not applied.
+    /// </summary>
+    /// <exception cref="GraphException">The JSON is not a graph with an instances array.</exception>
+    public static string Apply(string json, IReadOnlyList<SettingOverride> overrides, PluginCatalog catalog, string path, ICollection<GraphProblem> problems)
+    {
+        ArgumentNullException.ThrowIfNull(json);
+        ArgumentNullException.ThrowIfNull(overrides);
+        ArgumentNullException.ThrowIfNull(catalog);
+        ArgumentNullException.ThrowIfNull(problems);
+        if (overrides.Count == 0)
+        {
+            return json;
+        }
+
+        JsonNode? root;
+        try
+        {
+            root = JsonNode.Parse(json, documentOptions: DocumentOptions);
+        }
+        catch (JsonException ex)
+        {
+            throw new GraphException([new GraphProblem("$", $"not valid JSON: {ex.Message}")], path);
+        }
+
+        if (root is not JsonObject graph || graph["instances"] is not JsonArray instances)
+        {
+            throw new GraphException([new GraphProblem("$.instances", "the graph has no instances array to apply --set to")], path);
+        }
+
+        foreach (var item in overrides)
+        {
+            var instance = instances.OfType<JsonObject>().FirstOrDefault(i => i["name"] is JsonValue v && v.TryGetValue<string>(out var n) && n == item.Instance);
+            if (instance is null)
+            {
+                var names = instances.OfType<JsonObject>().Select(i => i["name"]?.ToString()).Where(n => n is not null);
+                problems.Add(new GraphProblem($"--set {item}", $"no instance named '{item.Instance}' (instances: {string.Join(", ", names)})"));
+                continue;
+            }
+
+            if (instance["settings"] is not JsonObject settings)
+            {
+                settings = [];
+                instance["settings"] = settings;
+            }
+
+            settings[item.Setting] = Value(item, instance, catalog);
+        }
+
+        return root.ToJsonString();
+    }
+
+    private static JsonValue Value(SettingOverride item, JsonObject instance, PluginCatalog catalog)
+    {
+        var type = instance["type"] is JsonValue t && t.TryGetValue<string>(out var name) ? catalog.Find(name) : null;
+        var kind = type?.Settings?.Settings.FirstOrDefault(s => s.JsonName == item.Setting)?.Kind;
+        var text = item.Value.Trim();
+        return kind switch
+        {
+            SettingKind.Number when double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var d) => JsonValue.Create(d),
+            SettingKind.Integer when long.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out var i) => JsonValue.Create(i),
+            SettingKind.Boolean when bool.TryParse(text, out var b) => JsonValue.Create(b),
+            _ => JsonValue.Create(item.Value),
+        };
+    }
+}

@@ -1,0 +1,191 @@
+using System.Diagnostics;
+using System.Globalization;
+using RobotControl.Plugins.CoppeliaSim;
+using RobotControl.Runtime.GraphFiles;
+using RobotControl.Runtime.Harness;
+using RobotControl.Runtime.Loop;
+
+namespace RobotControl.CoppeliaSim.Tests.Plugin;
+
+public sealed class CoppeliaSimPluginTests
+{
+    [Fact]
+    public void Teleop_graph_on_the_virtual_robot_sends_the_ik_outputs_of_one_tick_and_reports_them_back()
+    {
+        var joints = BridgeTestSupport.Joints;
+        using var server = new FakeCoppeliaSim(joints.Select(j => j.Path));
+        var ikByTick = new List<double[]>();
+        int[]? ik = null;
+        int[]? reported = null;
+        CoppeliaSimPlugin? plugin = null;
+        long lastChecked = -1;
+        var checkedTicks = 0;
+        var wall = Stopwatch.StartNew();
+        var hooks = new VirtualRunHooks
+        {
+            AroundTick = loop =>
+            {
+                loop.Step();
+                Pace(loop, wall);
+                var names = loop.Program.OutputSignals.Names.ToList();
+                plugin ??= loop.Program.Order.OfType<CoppeliaSimPlugin>().Single();
+                ik ??= [.. joints.Select(j => names.IndexOf($"ik_{j.Signal}"))]; // ik_right.elbow feeds sim.right.elbow
+                reported ??= [.. joints.Select(j => names.IndexOf($"sim.{j.Signal}.position"))];
+                var values = loop.Program.OutputSignals.Values.ToArray();
+                ikByTick.Add([.. ik.Select(i => values[i])]);
+                var tick = plugin.LastReportTick;
+                if (tick >= 0 && tick != lastChecked)
+                {
+                    Assert.Equal(ikByTick[(int)tick], reported.Select(i => values[i]).ToArray());
+                    lastChecked = tick;
+                    checkedTicks++;
+                }
+            },
+        };
+        var options = new RunOptions
+        {
+            GraphPath = Path.Combine(BridgeTestSupport.Root, "graphs/teleop-lb-coppeliasim.json"),
+            Duration = TimeSpan.FromSeconds(3),
+            SettingOverrides = [new SettingOverride("sim", "endpoint", server.Endpoint)],
+        };
+
+        var report = HeadlessRun.RunVirtual(options, BridgeTestSupport.Catalog(), hooks);
+
+        Assert.All(ik!, i => Assert.True(i >= 0));
+        Assert.All(reported!, i => Assert.True(i >= 0));
+        Assert.Empty(report.Faults);
+        Assert.Equal(0, report.DeadlineMisses);
+        Assert.True(checkedTicks >= 3, $"only {checkedTicks} reports came back");
+
+        // Every batch the simulator received (one call per joint, in port order) is the IK output of one tick.
+        var known = ikByTick.Select(Key).ToHashSet();
+        var sets = server.Requests.Where(r => r.Func == "sim.setJointPosition").ToList();
+        Assert.True(sets.Count >= joints.Count * 3);
+        for (var b = 0; b + joints.Count <= sets.Count; b += joints.Count)
+        {
+            var batch = sets.Skip(b).Take(joints.Count).ToList();
+            Assert.Equal(Enumerable.Range(0, joints.Count).Select(i => 10L + i), batch.Select(r => (long)r.Args[0]!));
+            Assert.Contains(Key([.. batch.Select(r => (double)r.Args[1]!)]), known);
+        }
+    }
+
+    [Fact]
+    public void Killed_simulator_mid_run_shows_as_disconnected_without_a_deadline_miss_and_the_bridge_reconnects()
+    {
+        var joints = BridgeTestSupport.Joints;
+        using var server = new FakeCoppeliaSim(joints.Select(j => j.Path));
+        var phase = KillPhase.Connecting;
+        var reportsAtLoss = 0L;
+        var connectedSeen = new List<double>();
+        CoppeliaSimPlugin? plugin = null;
+        var wall = Stopwatch.StartNew();
+        var hooks = new VirtualRunHooks
+        {
+            AroundTick = loop =>
+            {
+                loop.Step();
+                Pace(loop, wall);
+                plugin ??= loop.Program.Order.OfType<CoppeliaSimPlugin>().Single();
+                var connected = plugin.GetOutput("connected");
+                if (connectedSeen.Count == 0 || connectedSeen[^1] != connected)
+                {
+                    connectedSeen.Add(connected);
+                }
+
+                switch (phase)
+                {
+                    case KillPhase.Connecting when connected == 1 && plugin.Reports > 3:
+                        server.Kill();
+                        phase = KillPhase.Killed;
+                        break;
+                    case KillPhase.Killed when connected == 0:
+                        reportsAtLoss = plugin.Reports;
+                        server.Start();
+                        phase = KillPhase.Restarted;
+                        break;
+                    case KillPhase.Restarted when connected == 1 && plugin.Reports > reportsAtLoss + 3:
+                        phase = KillPhase.Flowing;
+                        break;
+                }
+            },
+        };
+        var options = new RunOptions
+        {
+            GraphPath = Path.Combine(BridgeTestSupport.Root, "graphs/teleop-lb-coppeliasim.json"),
+            Duration = TimeSpan.FromSeconds(8),
+            SettingOverrides = [new SettingOverride("sim", "endpoint", server.Endpoint), new SettingOverride("sim", "call_timeout_ms", "300")],
+        };
+
+        var report = HeadlessRun.RunVirtual(options, BridgeTestSupport.Catalog(), hooks);
+
+        Assert.Equal(KillPhase.Flowing, phase);
+        // Down, up, down when killed, up again; a heavily loaded machine may add a late reply counted as a loss.
+        Assert.Equal([0.0, 1.0, 0.0, 1.0], connectedSeen.Take(4));
+        Assert.True(plugin!.Sessions >= 2);
+        Assert.Equal(0, report.DeadlineMisses);
+        Assert.Empty(report.Faults);
+    }
+
+    [Fact]
+    public void Stepping_steps_the_simulator_once_per_ticks_per_step()
+    {
+        var joints = BridgeTestSupport.Joints;
+        using var server = new FakeCoppeliaSim(joints.Select(j => j.Path)) { WaitsPerStep = 1 };
+        var json = $$"""
+            {
+              "schema": "robotcontrol/graph/1",
+              "robot": "{{Path.Combine(BridgeTestSupport.Root, "hardware/robots/lb-1.0.json")}}",
+              "instances": [ { "name": "sim", "type": "coppeliasim", "settings": { "endpoint": "{{server.Endpoint}}", "stepping": true, "ticks_per_step": 10 } } ],
+              "wires": []
+            }
+            """;
+        var loaded = GraphFile.LoadFromText(json, Path.Combine(BridgeTestSupport.Root, "graphs/step-test.json"), BridgeTestSupport.Catalog(), TimeProvider.System);
+        loaded.RobotNode!.Attach(new HeldRobotPort(BridgeTestSupport.Lb));
+        var plugin = loaded.Program.Order.OfType<CoppeliaSimPlugin>().Single();
+        using var loop = new ControlLoop(loaded.Program, TimeProvider.System, loaded.Document.LoopRateHz);
+        loop.Start();
+        BridgeTestSupport.WaitFor(() => plugin.Steps >= 20, TimeSpan.FromSeconds(20), "20 steps");
+        loop.Stop();
+        var ticks = loop.TickCount;
+
+        Assert.True(server.Stepping);
+        Assert.InRange(plugin.Steps, 20, (ticks / 10) + 1);
+        Assert.Equal(plugin.Steps, server.Steps);
+    }
+
+    [Fact]
+    public void Joint_paths_default_to_the_urdf_names_and_overrides_are_checked()
+    {
+        var settings = new CoppeliaSimSettings { Model = "/Robot/", JointPaths = "left.elbow=/Other/elbow_l" };
+        var map = JointPathMap.Build(BridgeTestSupport.Lb, settings, "sim");
+        Assert.Equal(("right.shoulder_yaw", "/Robot/right_shoulder_yaw"), map[0]);
+        Assert.Equal(("left.elbow", "/Other/elbow_l"), map.Single(m => m.Signal == "left.elbow"));
+
+        var unknown = Assert.Throws<RobotControl.Plugins.Sdk.Settings.SettingsException>(() =>
+            JointPathMap.Build(BridgeTestSupport.Lb, settings with { JointPaths = "left.knee=/x" }, "sim"));
+        Assert.StartsWith("'sim': invalid settings: joint_paths: 'left.knee' is not a joint of LB-1.0", unknown.Message, StringComparison.Ordinal);
+        var malformed = Assert.Throws<RobotControl.Plugins.Sdk.Settings.SettingsException>(() =>
+            JointPathMap.Build(BridgeTestSupport.Lb, settings with { JointPaths = "left.elbow" }, "sim"));
+        Assert.Equal("'sim': invalid settings: joint_paths: 'left.elbow' is not arm.joint=/path", malformed.Message);
+    }
+
+    // Holds the virtual run to no faster than real time, so the bridge (real time) sees a run of the stated length.
+    private static void Pace(ControlLoop loop, Stopwatch wall)
+    {
+        var ahead = (loop.TickCount / loop.RateHz) - wall.Elapsed.TotalSeconds;
+        if (ahead > 0.002)
+        {
+            Thread.Sleep(TimeSpan.FromSeconds(ahead));
+        }
+    }
+
+    private static string Key(double[] values) => string.Join(",", values.Select(v => v.ToString("R", CultureInfo.InvariantCulture)));
+
+    private enum KillPhase
+    {
+        Connecting,
+        Killed,
+        Restarted,
+        Flowing,
+    }
+}
