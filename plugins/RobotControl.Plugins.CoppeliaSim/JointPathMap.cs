@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Hardware.Model;
 using RobotControl.Kinematics.Urdf;
 using RobotControl.Plugins.Sdk.Settings;
@@ -63,5 +64,5 @@ internal static class JointPathMap
     }
 
     private static SettingsException Error(string instanceName, string message) =>
-        new(instanceName, [new SettingError("joint_paths", message)]);
+        new(instanceName, [new JsonProblem("joint_paths", message)]);
 }

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Plugins.Touch;
@@ -68,11 +69,11 @@ public sealed record TouchSettings : PluginSettings
     public double MaxForceN { get; init; } = 3.3;
 
     /// <inheritdoc />
-    public override IEnumerable<SettingError> CheckConsistency()
+    public override IEnumerable<JsonProblem> CheckConsistency()
     {
         if (Backend == TouchBackendKind.Simulated && string.IsNullOrWhiteSpace(Script))
         {
-            yield return new SettingError("script", "is required by the simulated back end");
+            yield return new JsonProblem("script", "is required by the simulated back end");
         }
     }
 }

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using System.Text.Json;
 using RobotControl.Hardware.Model;
 using RobotControl.Plugins.Sdk.Settings;
@@ -38,7 +39,7 @@ public static class PluginHarness
     {
         ArgumentNullException.ThrowIfNull(json);
         using var document = JsonDocument.Parse(json);
-        var errors = new List<SettingError>();
+        var errors = new List<JsonProblem>();
         var settings = SettingsSchema.For(typeof(TSettings)).Read(document.RootElement, errors);
         return settings is TSettings typed && errors.Count == 0 ? typed : throw new SettingsException(typeof(TSettings).Name, errors);
     }

@@ -55,7 +55,7 @@ public sealed class PluginHarnessTests
     {
         Assert.Equal(4.5, PluginHarness.ReadSettings<IntegratorSettings>("""{ "gain": 4.5 }""").Gain);
         var ex = Assert.Throws<SettingsException>(() => PluginHarness.ReadSettings<IntegratorSettings>("""{ "gain": 20, "colour": 1 }"""));
-        Assert.Equal(["colour", "gain"], ex.Errors.Select(e => e.Setting).Order(StringComparer.Ordinal));
+        Assert.Equal(["colour", "gain"], ex.Errors.Select(e => e.Path).Order(StringComparer.Ordinal));
     }
 
     [Fact]

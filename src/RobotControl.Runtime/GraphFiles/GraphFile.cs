@@ -55,7 +55,7 @@ public static class GraphFile
         }
 
         ArgumentNullException.ThrowIfNull(catalog);
-        var overrideProblems = new List<GraphProblem>();
+        var overrideProblems = new List<JsonProblem>();
         var overridden = GraphSettingOverrides.Apply(text, overrides, catalog, fullPath, overrideProblems);
         LoadedGraph loaded;
         try

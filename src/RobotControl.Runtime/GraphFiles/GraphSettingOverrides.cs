@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using System.Globalization;
 using System.Text.Json;
 using System.Text.Json.Nodes;
@@ -23,7 +24,7 @@ public static class GraphSettingOverrides
     /// that names no instance is added to <paramref name="problems"/> and not applied.
     /// </summary>
     /// <exception cref="GraphException">The JSON is not a graph with an instances array.</exception>
-    public static string Apply(string json, IReadOnlyList<SettingOverride> overrides, PluginCatalog catalog, string path, ICollection<GraphProblem> problems)
+    public static string Apply(string json, IReadOnlyList<SettingOverride> overrides, PluginCatalog catalog, string path, ICollection<JsonProblem> problems)
     {
         ArgumentNullException.ThrowIfNull(json);
         ArgumentNullException.ThrowIfNull(overrides);
@@ -41,12 +42,12 @@ public static class GraphSettingOverrides
         }
         catch (JsonException ex)
         {
-            throw new GraphException([new GraphProblem("$", $"not valid JSON: {ex.Message}")], path);
+            throw new GraphException([new JsonProblem("$", $"not valid JSON: {ex.Message}")], path);
         }
 
         if (root is not JsonObject graph || graph["instances"] is not JsonArray instances)
         {
-            throw new GraphException([new GraphProblem("$.instances", "the graph has no instances array to apply --set to")], path);
+            throw new GraphException([new JsonProblem("$.instances", "the graph has no instances array to apply --set to")], path);
         }
 
         foreach (var item in overrides)
@@ -55,7 +56,7 @@ public static class GraphSettingOverrides
             if (instance is null)
             {
                 var names = instances.OfType<JsonObject>().Select(i => i["name"]?.ToString()).Where(n => n is not null);
-                problems.Add(new GraphProblem($"--set {item}", $"no instance named '{item.Instance}' (instances: {string.Join(", ", names)})"));
+                problems.Add(new JsonProblem($"--set {item}", $"no instance named '{item.Instance}' (instances: {string.Join(", ", names)})"));
                 continue;
             }
 

@@ -2,6 +2,8 @@ using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Tests.Support;
 
+using RobotControl.TestSupport;
+
 namespace RobotControl.Bus.Tests.Client;
 
 /// <summary><see cref="BusClient.FullStateRead"/> on the virtual LB-1.0 (real firmware): fast and fallback paths.</summary>

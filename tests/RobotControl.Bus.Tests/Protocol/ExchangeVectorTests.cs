@@ -2,6 +2,8 @@ using System.Text.Json;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Tests.Support;
 
+using RobotControl.TestSupport;
+
 namespace RobotControl.Bus.Tests.Protocol;
 
 /// <summary>
@@ -85,7 +87,7 @@ public sealed class ExchangeVectorTests
 
     private static JsonElement[] Load()
     {
-        using var doc = JsonDocument.Parse(File.ReadAllText(RepoPaths.Firmware("protocol/test-vectors.json")));
+        using var doc = JsonDocument.Parse(File.ReadAllText(RepositoryPaths.Firmware("protocol/test-vectors.json")));
         return doc.RootElement.GetProperty("exchanges").EnumerateArray().Select(e => e.Clone()).ToArray();
     }
 }

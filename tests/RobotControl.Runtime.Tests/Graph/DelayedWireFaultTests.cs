@@ -3,6 +3,8 @@ using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Tests.Support;
 
+using RobotControl.TestSupport;
+
 namespace RobotControl.Runtime.Tests.Graph;
 
 public sealed class DelayedWireFaultTests

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;
@@ -76,7 +77,7 @@ public sealed class GraphSettingOverridesTests
     [Fact]
     public void Without_overrides_the_text_is_untouched()
     {
-        var problems = new List<GraphProblem>();
+        var problems = new List<JsonProblem>();
         Assert.Same(Graph, GraphSettingOverrides.Apply(Graph, [], Catalog, "/tmp/g.json", problems));
         Assert.Empty(problems);
     }

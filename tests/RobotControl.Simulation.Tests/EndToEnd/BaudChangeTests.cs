@@ -1,9 +1,11 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Bus.Tests.Support;
+using RobotControl.Simulation.Tests.Support;
 using RobotControl.Bus.Transports;
 
-namespace RobotControl.Bus.Tests.EndToEnd;
+using RobotControl.TestSupport;
+
+namespace RobotControl.Simulation.Tests.EndToEnd;
 
 /// <summary>A baud change over the pty: the modules switch after their reply, the simulated line follows the client's port.</summary>
 public sealed class BaudChangeTests

@@ -1,7 +1,9 @@
 using System.Diagnostics;
-using RobotControl.Bus.Tests.Support;
+using RobotControl.Simulation.Tests.Support;
 
-namespace RobotControl.Bus.Tests.EndToEnd;
+using RobotControl.TestSupport;
+
+namespace RobotControl.Simulation.Tests.EndToEnd;
 
 /// <summary>
 /// Interoperability with a master written independently from the published Dynamixel Protocol 2.0
@@ -14,7 +16,7 @@ public sealed class PythonInteropTests
     public async Task The_independent_master_finds_every_instruction_and_error_code_as_the_protocol_defines_them()
     {
         using var served = new ServedPty();
-        var script = Path.Combine(RepoPaths.Root, "tests", "interop", "dxl_master.py");
+        var script = Path.Combine(RepositoryPaths.Root, "tests", "interop", "dxl_master.py");
         var start = new ProcessStartInfo("python3", $"\"{script}\" {served.SlavePath}") { RedirectStandardOutput = true, RedirectStandardError = true };
         using var master = Process.Start(start)!;
         var output = master.StandardOutput.ReadToEndAsync();

@@ -1,8 +1,9 @@
 using RobotControl.Bus.Transports.Serial;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
+using RobotControl.TestSupport;
 
-namespace RobotControl.Bus.Tests.Support;
+namespace RobotControl.Simulation.Tests.Support;
 
 /// <summary>A virtual LB-1.0 served in real time on a fresh pty (for clients that open <see cref="SlavePath"/>).</summary>
 internal sealed class ServedPty : IDisposable
