@@ -1,5 +1,6 @@
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Tests.Support;
+using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 

@@ -1,6 +1,6 @@
 using System.CommandLine;
 using RobotControl.Bus.Protocol;
-using RobotControl.Robot.Modules;
+using RobotControl.Modules;
 
 namespace RobotControl.Cli.Commands.Bus;
 

@@ -1,10 +1,9 @@
 using System.CommandLine;
 using System.Globalization;
-using RobotControl.Plugins.Standard.Conditioning;
-using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
-using RobotControl.Runtime.Harness;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Plugins;
 using Spectre.Console;
 
 namespace RobotControl.Cli.Commands.Run;
@@ -48,16 +47,7 @@ internal sealed class RunCommand : ICliCommand
     }
 
     /// <summary>The catalogue of the host's plug-in types (standard and Touch), plus a plug-ins folder.</summary>
-    internal static PluginCatalog Catalog(string? pluginsFolder)
-    {
-        var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
-        if (pluginsFolder is not null)
-        {
-            catalog.AddFolder(pluginsFolder);
-        }
-
-        return catalog;
-    }
+    internal static PluginCatalog Catalog(string? pluginsFolder) => HostPlugins.Catalog(pluginsFolder);
 
     /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
     internal static int Run(string graphPath, bool isVirtual, string durationText, string? reportPath, string? injectText, string? pluginsFolder, int seed, TextWriter output, TextWriter error)

@@ -1,7 +1,7 @@
 using System.Text;
 using System.Text.Json;
 
-namespace RobotControl.Runtime.Harness;
+namespace RobotControl.Host.Harness;
 
 /// <summary>
 /// The outcome of a headless run, written as <c>report.json</c>:

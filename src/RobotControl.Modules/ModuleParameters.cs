@@ -1,7 +1,7 @@
 using RobotControl.Bus.Protocol;
 using RobotControl.Hardware.Model;
 
-namespace RobotControl.Robot.Modules;
+namespace RobotControl.Modules;
 
 /// <summary>One persistent control-table value the robot file implies for a module.</summary>
 /// <param name="Field">The control-table field.</param>
@@ -23,9 +23,6 @@ public sealed record ParameterValue(ControlTableField Field, int Motor, long Val
 /// </summary>
 public static class ModuleParameters
 {
-    /// <summary>Pot calibration points written (the firmware's maximum).</summary>
-    public const int PotPoints = 8;
-
     /// <summary>Baud codes of the control table's <c>baud_rate</c> field.</summary>
     private static readonly int[] BaudCodes = [9600, 57600, 115200, 1_000_000, 2_000_000, 3_000_000, 4_000_000, 4_500_000];
 
@@ -63,15 +60,14 @@ public static class ModuleParameters
 
             // Pot calibration: points evenly spaced in Hall counts over the pot's calibrated range.
             var pot = motor.Pot;
-            var pos0 = config.ToCounts(pot.MinRad);
-            var step = (int)Math.Round((config.ToCounts(pot.MaxRad) - pos0) / (double)(PotPoints - 1));
-            values.Add(new(table["pot_cal_count"], ch, PotPoints, "points"));
-            values.Add(new(table["pot_cal_pos0"], ch, pos0, $"{pot.MinRad * 180 / Math.PI:F1} deg"));
-            values.Add(new(table["pot_cal_step"], ch, step, $"{step / config.CountsPerRad * 180 / Math.PI:F2} deg"));
-            for (var k = 0; k < PotPoints; k++)
+            var cal = PotCalibrationTable.For(config);
+            values.Add(new(table["pot_cal_count"], ch, cal.Count, "points"));
+            values.Add(new(table["pot_cal_pos0"], ch, cal.Pos0, $"{pot.MinRad * 180 / Math.PI:F1} deg"));
+            values.Add(new(table["pot_cal_step"], ch, cal.Step, $"{cal.Step / config.CountsPerRad * 180 / Math.PI:F2} deg"));
+            for (var k = 0; k < cal.Count; k++)
             {
-                var angle = config.ToRadians(pos0 + ((long)k * step));
-                values.Add(new(table[$"pot_cal_raw{k}"], ch, (long)Math.Round(pot.Reading(angle)), $"pot at {angle * 180 / Math.PI:F1} deg"));
+                var angle = config.ToRadians(cal.Pos0 + (k * cal.Step));
+                values.Add(new(table[$"pot_cal_raw{k}"], ch, cal.Raw[k], $"pot at {angle * 180 / Math.PI:F1} deg"));
             }
 
             // A reset module may disagree with its pot by the pot's resolution plus backlash: allow 5 degrees of output.

@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace RobotControl.Runtime.Harness;
+namespace RobotControl.Host.Harness;
 
 /// <summary>
 /// Faults to inject into the virtual robot, parsed from <c>ber=1e-5,reset=right.shoulder@5s,reset=left.forearm@8.5s</c>:

@@ -1,6 +1,6 @@
 using RobotControl.Hardware.Model;
 
-namespace RobotControl.Robot.Modules;
+namespace RobotControl.Modules;
 
 /// <summary>
 /// One motor as the robot file configures it: where it sits on the bus (module ID and channel), which axis of which

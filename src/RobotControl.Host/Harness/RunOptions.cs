@@ -1,4 +1,4 @@
-namespace RobotControl.Runtime.Harness;
+namespace RobotControl.Host.Harness;
 
 /// <summary>What a headless run does.</summary>
 public sealed record RunOptions

@@ -4,7 +4,7 @@ using RobotControl.Robot.Control;
 using RobotControl.Runtime.Loop;
 using RobotControl.Runtime.Robot;
 
-namespace RobotControl.Runtime.Harness;
+namespace RobotControl.Host.Harness;
 
 /// <summary>
 /// Tracking error on the loop thread, after every tick: the distance between the commanded tool position (forward
