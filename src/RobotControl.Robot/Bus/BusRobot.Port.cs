@@ -1,10 +1,4 @@
-using System.Buffers.Binary;
-using RobotControl.Bus.Client;
-using RobotControl.Bus.Protocol;
-using RobotControl.Modules;
 using RobotControl.Robot.Control;
-using RobotControl.Robot.Events;
-using RobotControl.Robot.States;
 
 namespace RobotControl.Robot.Bus;
 

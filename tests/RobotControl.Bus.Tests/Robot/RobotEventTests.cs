@@ -13,20 +13,7 @@ public sealed class RobotEventTests
     [Fact]
     public void A_discovery_problem_is_one_typed_event_per_finding()
     {
-        // The host's robot file moves the left forearm to ID 20 (not on the bus) and forgets the right forearm (ID 3).
-        var json = JsonNode.Parse(File.ReadAllText(RepoPaths.Robot("lb-1.0.json")))!;
-        var layout = json["modules"]!["layout"]!.AsArray();
-        layout.RemoveAt(2);
-        foreach (var m in layout)
-        {
-            if ((int)m!["id"]! == 13)
-            {
-                m["id"] = 20;
-            }
-        }
-
-        var hostView = RobotLoader.LoadFromText(json.ToJsonString(), RepoPaths.Robot("edited.json"));
-        using var lb = new VirtualLb(hostView: hostView);
+        using var lb = new VirtualLb(hostView: VirtualLb.MisconfiguredHostView());
         var problems = lb.Robot.Events.OfType<DiscoveryProblemEvent>().Select(e => e.Problem).ToList();
         Assert.Equal(lb.Discovery!.Problems, problems);
         var missing = Assert.Single(problems, p => p.Kind == DiscoveryProblemKind.Missing);
