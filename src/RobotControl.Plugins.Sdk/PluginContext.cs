@@ -1,4 +1,5 @@
 using RobotControl.Hardware.Model;
+using RobotControl.Plugins.Sdk.Devices;
 
 namespace RobotControl.Plugins.Sdk;
 
@@ -12,6 +13,19 @@ public sealed record PluginContext(string InstanceName, RobotDefinition? Robot, 
     /// <summary>A context for a stand-alone plug-in (tests, tools): no robot, system clock, current directory.</summary>
     public static PluginContext Standalone(string instanceName, RobotDefinition? robot = null, TimeProvider? time = null) =>
         new(instanceName, robot, time ?? TimeProvider.System, Directory.GetCurrentDirectory());
+
+    /// <summary>How the host opens a device's bytes from a transport string (null when it opens none, e.g. stand-alone).</summary>
+    public Func<string, IByteSource>? DeviceOpener { get; init; }
+
+    /// <summary>Opens the device <paramref name="transport"/> names (e.g. <c>serial:/dev/ttyUSB1?baud=9600</c>) through the host.</summary>
+    /// <exception cref="InvalidOperationException">The host opens no devices.</exception>
+    /// <exception cref="IOException">The device cannot be opened.</exception>
+    public IByteSource OpenDevice(string transport)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(transport);
+        return DeviceOpener?.Invoke(transport)
+            ?? throw new InvalidOperationException($"plug-in instance '{InstanceName}': this host opens no devices (transport '{transport}')");
+    }
 
     /// <summary>Resolves a path from settings against <see cref="BaseDirectory"/>.</summary>
     public string ResolvePath(string path)

@@ -1,5 +1,5 @@
 using RobotControl.Hardware.Model;
-using RobotControl.Robot.Modules;
+using RobotControl.Modules;
 using RobotControl.Simulation.Models;
 
 namespace RobotControl.Simulation;

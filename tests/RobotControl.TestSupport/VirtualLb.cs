@@ -1,3 +1,4 @@
+using System.Text.Json.Nodes;
 using RobotControl.Bus.Client;
 using RobotControl.Hardware.Model;
 using RobotControl.Robot.Bus;
@@ -33,6 +34,23 @@ public sealed class VirtualLb : IDisposable
     public BusRobot Robot { get; }
 
     public DiscoveryReport? Discovery { get; }
+
+    /// <summary>The LB as a misconfigured host sees it: the left forearm moved to ID 20 (not on the bus), the right forearm (ID 3) forgotten.</summary>
+    public static RobotDefinition MisconfiguredHostView()
+    {
+        var json = JsonNode.Parse(File.ReadAllText(RepoPaths.Robot("lb-1.0.json")))!;
+        var layout = json["modules"]!["layout"]!.AsArray();
+        layout.RemoveAt(2);
+        foreach (var m in layout)
+        {
+            if ((int)m!["id"]! == 13)
+            {
+                m["id"] = 20;
+            }
+        }
+
+        return RobotLoader.LoadFromText(json.ToJsonString(), RepoPaths.Robot("edited.json"));
+    }
 
     public void Dispose()
     {

@@ -1,9 +1,7 @@
 using System.Globalization;
 using System.Text;
-using RobotControl.Plugins.Standard.Conditioning;
-using RobotControl.Plugins.Touch;
-using RobotControl.Runtime.Discovery;
-using RobotControl.Runtime.Harness;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Plugins;
 
 namespace RobotControl.Bench.Loop;
 
@@ -25,7 +23,7 @@ internal sealed class LoopBench : IBenchCommand
         var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
         var duration = RunDuration.Parse(Arg(args, "--duration") ?? "20s");
         var outPath = Arg(args, "--out") ?? "docs/perf/loop.md";
-        var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
+        var catalog = HostPlugins.Catalog();
         var c = CultureInfo.InvariantCulture;
 
         // 1. Tick cost, allocations and latency in one run (after a cold run to warm the JIT).
@@ -37,9 +35,9 @@ internal sealed class LoopBench : IBenchCommand
         var warm = HeadlessRun.RunVirtual(new RunOptions { GraphPath = graph, Duration = duration }, catalog, new VirtualRunHooks
         {
             WrapLink = (link, time) => { clock = time; return tap = new FrameTapLink(link, time); },
-            AroundTick = loop =>
+            AroundTick = (loop, due) =>
             {
-                tickTimes.Add(clock!.GetTimestamp());
+                tickTimes.Add(due);
                 var before = GC.GetAllocatedBytesForCurrentThread();
                 loop.Step();
                 var after = GC.GetAllocatedBytesForCurrentThread();

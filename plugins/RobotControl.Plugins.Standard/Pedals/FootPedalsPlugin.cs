@@ -1,4 +1,3 @@
-using RobotControl.Bus.Transports;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Plugins.Sdk.Settings;
@@ -54,7 +53,7 @@ public sealed class FootPedalsPlugin : Plugin<FootPedalsSettings>
         ArgumentNullException.ThrowIfNull(context);
         SettingsSchema.For(typeof(FootPedalsSettings)).ThrowIfInvalid(settings, context.InstanceName);
         return settings.Source == PedalSourceKind.Serial
-            ? new SerialPedalSource(() => LinkFactory.Open(settings.Transport))
+            ? new SerialPedalSource(() => context.OpenDevice(settings.Transport))
             : new ScriptedPedalSource(settings.Script);
     }
 }

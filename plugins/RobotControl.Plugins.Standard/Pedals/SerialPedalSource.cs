@@ -1,23 +1,23 @@
-using RobotControl.Bus.Transports;
+using RobotControl.Plugins.Sdk.Devices;
 using RobotControl.Plugins.Sdk.Exchange;
 
 namespace RobotControl.Plugins.Standard.Pedals;
 
 /// <summary>
-/// A pedal box on a byte link (serial, USB, TCP): a reader thread parses frames and publishes the latest mask
+/// A pedal box on a device byte source (a serial, USB or TCP link the host opens): a reader thread parses frames and publishes the latest mask
 /// through a <see cref="LatestValue{T}"/>, so the loop reads it without locks or waiting.
 /// </summary>
 public sealed class SerialPedalSource : IPedalSource
 {
-    private readonly Func<IByteLink> _open;
+    private readonly Func<IByteSource> _open;
     private readonly LatestValue<int> _latest = new();
     private readonly PedalFrameParser _parser = new();
-    private IByteLink? _link;
+    private IByteSource? _link;
     private Thread? _reader;
     private volatile bool _stopping;
 
     /// <summary>Creates a source that opens its link with <paramref name="open"/> on <see cref="Start"/>.</summary>
-    public SerialPedalSource(Func<IByteLink> open)
+    public SerialPedalSource(Func<IByteSource> open)
     {
         ArgumentNullException.ThrowIfNull(open);
         _open = open;

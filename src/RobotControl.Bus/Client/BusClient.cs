@@ -151,15 +151,6 @@ public sealed partial class BusClient : IDisposable
         return Transact(id, Instruction.Write, p, 0);
     }
 
-    /// <summary>Writes without waiting for a reply (broadcast writes get none).</summary>
-    public void WriteNoReply(byte id, ushort address, ReadOnlySpan<byte> data)
-    {
-        var p = _params.AsSpan(0, 2 + data.Length);
-        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
-        data.CopyTo(p[2..]);
-        Send(id, Instruction.Write, p);
-    }
-
     /// <summary>Restarts a module (it answers before restarting).</summary>
     public Reply Reboot(byte id) => Transact(id, Instruction.Reboot, ReadOnlySpan<byte>.Empty, 0);
 

@@ -12,6 +12,8 @@ public sealed class ControlTable
     private const string ResourceName = "RobotControl.Bus.Protocol.control-table.json";
     private static readonly Lazy<ControlTable> s_firmware = new(LoadEmbedded);
     private readonly Dictionary<string, ControlTableField> _fields;
+    private Dictionary<string, IReadOnlyDictionary<string, int>> _bits = [];
+    private Dictionary<string, IReadOnlyDictionary<int, string>> _codes = [];
 
     private ControlTable(int tableSize, int maxMotors, (int Start, int End) persistent, (int Start, int End) volatileArea, IReadOnlyList<ControlTableField> fields)
     {
@@ -84,6 +86,19 @@ public sealed class ControlTable
         return runs;
     }
 
+    /// <summary>For a bit field (e.g. <c>hardware_error_status</c>): each named bit's position, as the definition's <c>bits</c> give them; empty otherwise.</summary>
+    public IReadOnlyDictionary<string, int> Bits(string field) =>
+        _bits.TryGetValue(field, out var b) ? b : new Dictionary<string, int>(StringComparer.Ordinal);
+
+    /// <summary>The mask of bit <paramref name="bit"/> of field <paramref name="field"/>.</summary>
+    /// <exception cref="KeyNotFoundException">The definition names no such bit.</exception>
+    public int Bit(string field, string bit) =>
+        Bits(field).TryGetValue(bit, out var at) ? 1 << at : throw new KeyNotFoundException($"the control table's field '{field}' defines no bit '{bit}'");
+
+    /// <summary>For a code field (e.g. <c>reset_cause</c>): each code's name, as the definition's <c>codes</c> give them; empty otherwise.</summary>
+    public IReadOnlyDictionary<int, string> Codes(string field) =>
+        _codes.TryGetValue(field, out var c) ? c : new Dictionary<int, string>();
+
     /// <summary>True when the firmware defines <paramref name="name"/>.</summary>
     public bool Contains(string name) => _fields.ContainsKey(name);
 
@@ -97,6 +112,8 @@ public sealed class ControlTable
         var persistent = areas.GetProperty("persistent");
         var volatileArea = areas.GetProperty("volatile");
         var fields = new List<ControlTableField>();
+        var bits = new Dictionary<string, IReadOnlyDictionary<string, int>>(StringComparer.Ordinal);
+        var codes = new Dictionary<string, IReadOnlyDictionary<int, string>>(StringComparer.Ordinal);
         foreach (var f in root.GetProperty("fields").EnumerateArray())
         {
             fields.Add(new ControlTableField(
@@ -113,6 +130,16 @@ public sealed class ControlTable
                 f.GetProperty("default").GetDouble(),
                 f.TryGetProperty("unit", out var u) ? u.GetString() ?? string.Empty : string.Empty,
                 f.TryGetProperty("description", out var d) ? d.GetString() ?? string.Empty : string.Empty));
+            var name = fields[^1].Name;
+            if (f.TryGetProperty("bits", out var b))
+            {
+                bits[name] = b.EnumerateObject().ToDictionary(x => x.Name, x => x.Value.GetInt32(), StringComparer.Ordinal);
+            }
+
+            if (f.TryGetProperty("codes", out var c))
+            {
+                codes[name] = c.EnumerateObject().ToDictionary(x => int.Parse(x.Name, System.Globalization.CultureInfo.InvariantCulture), x => x.Value.GetString() ?? string.Empty);
+            }
         }
 
         return new ControlTable(
@@ -120,7 +147,11 @@ public sealed class ControlTable
             root.GetProperty("max_motors").GetInt32(),
             (persistent.GetProperty("start").GetInt32(), persistent.GetProperty("end").GetInt32()),
             (volatileArea.GetProperty("start").GetInt32(), volatileArea.GetProperty("end").GetInt32()),
-            fields.OrderBy(f => f.Address).ToArray());
+            fields.OrderBy(f => f.Address).ToArray())
+        {
+            _bits = bits,
+            _codes = codes,
+        };
     }
 
     private static ControlTable LoadEmbedded()

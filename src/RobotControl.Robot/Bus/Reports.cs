@@ -1,5 +1,5 @@
 using RobotControl.Bus.Client;
-using RobotControl.Robot.Modules;
+using RobotControl.Modules;
 
 namespace RobotControl.Robot.Bus;
 
@@ -17,7 +17,15 @@ public sealed record DiscoveryReport(
     /// <summary>True when every configured module answered as configured and nothing else did.</summary>
     public bool AllAsConfigured => Missing.Count == 0 && Unknown.Count == 0 && Mismatched.Count == 0;
 
-    /// <summary>One line per finding.</summary>
+    /// <summary>What is wrong: every missing, unknown and mismatched module, one finding each (present ones are not problems).</summary>
+    public IReadOnlyList<DiscoveryProblem> Problems { get; } =
+    [
+        .. Missing.Select(c => new DiscoveryProblem(DiscoveryProblemKind.Missing, c.Id, $"MISSING  id {c.Id,3}  {c.Name}: configured in the robot file but does not answer")),
+        .. Unknown.Select(u => new DiscoveryProblem(DiscoveryProblemKind.Unknown, u.Id, $"UNKNOWN  id {u.Id,3}  model {u.ModelNumber}, firmware {u.FirmwareVersion}: answers but the robot file does not list it")),
+        .. Mismatched.Select(m => new DiscoveryProblem(DiscoveryProblemKind.Mismatched, null, $"MISMATCH {m}")),
+    ];
+
+    /// <summary>One line per finding: the modules found, then the problems.</summary>
     public IEnumerable<string> Lines()
     {
         foreach (var c in Present)
@@ -25,22 +33,31 @@ public sealed record DiscoveryReport(
             yield return $"found    id {c.Id,3}  {c.Name} (model {c.ModelNumber}, firmware {c.FirmwareVersion}, {c.Motors.Count} motors: {string.Join(", ", c.Motors.Select(m => m.Config.Name))})";
         }
 
-        foreach (var c in Missing)
+        foreach (var p in Problems)
         {
-            yield return $"MISSING  id {c.Id,3}  {c.Name}: configured in the robot file but does not answer";
-        }
-
-        foreach (var u in Unknown)
-        {
-            yield return $"UNKNOWN  id {u.Id,3}  model {u.ModelNumber}, firmware {u.FirmwareVersion}: answers but the robot file does not list it";
-        }
-
-        foreach (var m in Mismatched)
-        {
-            yield return $"MISMATCH {m}";
+            yield return p.Line;
         }
     }
 }
+
+/// <summary>What kind of discovery problem.</summary>
+public enum DiscoveryProblemKind
+{
+    /// <summary>A configured module does not answer.</summary>
+    Missing,
+
+    /// <summary>A module answers that the robot file does not list.</summary>
+    Unknown,
+
+    /// <summary>A configured module answers but is not what the robot file says (model, motor count).</summary>
+    Mismatched,
+}
+
+/// <summary>One discovery problem.</summary>
+/// <param name="Kind">What kind.</param>
+/// <param name="ModuleId">The module's bus ID, when the finding is about one ID.</param>
+/// <param name="Line">The line a person reads.</param>
+public sealed record DiscoveryProblem(DiscoveryProblemKind Kind, byte? ModuleId, string Line);
 
 /// <summary>One persistent parameter that differs between a module and the robot file.</summary>
 /// <param name="ModuleId">The module.</param>

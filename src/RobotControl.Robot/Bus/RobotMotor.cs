@@ -1,4 +1,4 @@
-using RobotControl.Robot.Modules;
+using RobotControl.Modules;
 
 namespace RobotControl.Robot.Bus;
 

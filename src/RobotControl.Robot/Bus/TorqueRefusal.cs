@@ -23,7 +23,7 @@ internal static class TorqueRefusal
         var cause = status switch
         {
             { Errors: var e } when e.HasFlag(HardwareErrors.BusWatchdog) => $"its bus watchdog error is latched ({e}, reset cause {status.Value.ResetCause}): clear the module's errors first",
-            { Errors: not HardwareErrors.None and var e } => $"it reports latched errors {e} (reset cause {status.Value.ResetCause}): clear them first",
+            { Errors: var e } when !e.IsNone => $"it reports latched errors {e} (reset cause {status.Value.ResetCause}): clear them first",
             null when torque.Outcome != ReplyOutcome.Ok && watchdog.Outcome != ReplyOutcome.Ok => "the module does not answer",
             null => "its status could not be read",
             _ => $"the module refused the write ({StatusErrors.Describe(torque.Succeeded ? watchdog.Error : torque.Error)}) without a latched error",

@@ -14,6 +14,9 @@ public sealed class PluginCatalog
     /// <summary>Every type, by name.</summary>
     public IReadOnlyCollection<PluginTypeInfo> Types => _types.Values;
 
+    /// <summary>How the plug-ins created from this catalogue open devices (set by the host; see <see cref="RobotControl.Plugins.Sdk.PluginContext.DeviceOpener"/>).</summary>
+    public Func<string, RobotControl.Plugins.Sdk.Devices.IByteSource>? DeviceOpener { get; set; }
+
     /// <summary>Problems met while scanning (malformed plug-in types, duplicate names, unloadable assemblies).</summary>
     public IReadOnlyList<string> Problems => _problems;
 

@@ -326,7 +326,7 @@ public static class GraphFile
 
             try
             {
-                var plugin = type.Create(settings, new PluginContext(name, robot, time, baseDirectory));
+                var plugin = type.Create(settings, new PluginContext(name, robot, time, baseDirectory) { DeviceOpener = catalog.DeviceOpener });
                 graph.Add(plugin);
                 specs.Add(new InstanceSpec(name, typeName, settings));
             }

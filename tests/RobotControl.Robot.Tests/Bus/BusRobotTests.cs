@@ -27,20 +27,7 @@ public sealed class BusRobotTests
     [Fact]
     public void Missing_and_unknown_modules_are_reported()
     {
-        // The host's robot file moves the left forearm to ID 20 (not on the bus) and forgets the right forearm (ID 3).
-        var json = JsonNode.Parse(File.ReadAllText(RepositoryPaths.Robot("lb-1.0.json")))!;
-        var layout = json["modules"]!["layout"]!.AsArray();
-        layout.RemoveAt(2);
-        foreach (var m in layout)
-        {
-            if ((int)m!["id"]! == 13)
-            {
-                m["id"] = 20;
-            }
-        }
-
-        var hostView = RobotLoader.LoadFromText(json.ToJsonString(), RepositoryPaths.Robot("edited.json"));
-        using var lb = new VirtualLb(hostView: hostView);
+        using var lb = new VirtualLb(hostView: VirtualLb.MisconfiguredHostView());
         var report = lb.Discovery!;
         Assert.Equal([20], report.Missing.Select(c => (int)c.Id));
         Assert.Equal([3, 13], report.Unknown.Select(p => (int)p.Id).Order());

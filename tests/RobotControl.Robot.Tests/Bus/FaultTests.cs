@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using RobotControl.Bus.Protocol;
 using RobotControl.Robot.Control;
+using RobotControl.Robot.Events;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Bus;
 using RobotControl.TestSupport;
@@ -54,7 +55,11 @@ public sealed class FaultTests
 
         Assert.True(lb.Robot.Faults.HasFlag(RobotFaults.ModuleReset));
         Assert.Equal(1, lb.Robot.Controller(2)!.Resets);
-        Assert.Contains(lb.Robot.Events, e => e.Contains("module 2", StringComparison.Ordinal) && e.Contains("brown-out", StringComparison.Ordinal) && e.Contains("resumed its position from FRAM", StringComparison.Ordinal));
+        var reset = Assert.Single(lb.Robot.Events.OfType<ModuleResetEvent>());
+        Assert.Equal((byte)2, reset.ModuleId);
+        Assert.Equal("brown-out", reset.Cause);
+        Assert.True(reset.ResumedFromFram);
+        Assert.Contains("resumed its position from FRAM", reset.Message, StringComparison.Ordinal);
         Assert.True(elbow.DriverEnabled, "the host re-armed the module");
         Assert.InRange(lb.Robot.Motor("right.elbow").PositionRad - elbow.OutputAngleRad, -1 * Deg, 1 * Deg); // within the backlash
         Assert.InRange(elbow.OutputAngleRad - before, -1 * Deg, 1 * Deg);

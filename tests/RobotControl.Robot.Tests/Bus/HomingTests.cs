@@ -1,4 +1,5 @@
 using RobotControl.Bus.Protocol;
+using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 using RobotControl.TestSupport;

@@ -1,7 +1,7 @@
 using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
-using RobotControl.Runtime.Harness;
+using RobotControl.Host.Harness;
 using RobotControl.Runtime.Tests.Support;
 
 namespace RobotControl.Runtime.Tests.Harness;

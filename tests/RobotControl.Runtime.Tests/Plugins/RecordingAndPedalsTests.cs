@@ -1,5 +1,5 @@
 using System.Runtime.Loader;
-using RobotControl.Bus.Transports;
+using RobotControl.Plugins.Sdk.Devices;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Standard.Pedals;
 using RobotControl.Plugins.Standard.Recording;
@@ -60,17 +60,9 @@ public sealed class RecordingAndPedalsTests : IDisposable
         Assert.Equal((0.0, 0.0), (pedals["pedal1"], pedals["pedal2"]));
     }
 
-    private sealed class BytesLink(byte[] bytes) : IByteLink
+    private sealed class BytesLink(byte[] bytes) : IByteSource
     {
         private int _at;
-
-        public string Description => "test bytes";
-
-        public int BaudRate => 9600;
-
-        public void Write(ReadOnlySpan<byte> data)
-        {
-        }
 
         public int Read(Span<byte> buffer, TimeSpan timeout)
         {
@@ -82,10 +74,6 @@ public sealed class RecordingAndPedalsTests : IDisposable
 
             buffer[0] = bytes[_at++]; // one byte at a time, as a slow UART delivers them
             return 1;
-        }
-
-        public void DiscardInput()
-        {
         }
 
         public void Dispose()

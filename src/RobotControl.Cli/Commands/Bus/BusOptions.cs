@@ -1,4 +1,6 @@
 using System.CommandLine;
+using RobotControl.Bus.Client;
+using RobotControl.Host.Session;
 using RobotControl.Cli.Options;
 
 namespace RobotControl.Cli.Commands.Bus;
@@ -34,7 +36,7 @@ internal sealed class BusOptions
             var text = result.Tokens.Count > 0 ? result.Tokens[0].Value : string.Empty;
             try
             {
-                BusSession.CheckTransport(text);
+                RobotConnection.CheckTransport(text);
             }
             catch (FormatException ex)
             {
@@ -47,14 +49,14 @@ internal sealed class BusOptions
     /// Runs <paramref name="body"/> with a session on the parsed transport, turning expected failures (bad transport,
     /// I/O, bad robot file, refused operation) into a message on the error stream and exit code 2.
     /// </summary>
-    public int Run(ParseResult parse, Func<BusSession, int> body)
+    public int Run(ParseResult parse, Func<RobotConnection, int> body)
     {
         ArgumentNullException.ThrowIfNull(parse);
         ArgumentNullException.ThrowIfNull(body);
         try
         {
             var margin = TimeSpan.FromMilliseconds(parse.GetValue(_marginMs));
-            using var session = BusSession.Open(parse.GetValue(_transport)!, parse.GetValue(_robot)?.FullName, margin);
+            using var session = RobotConnection.Open(parse.GetValue(_transport)!, parse.GetValue(_robot)?.FullName, new BusClientOptions { ResponseMargin = margin });
             return body(session);
         }
         catch (Exception ex) when (ex is FormatException or IOException or ArgumentException or KeyNotFoundException or Hardware.Loading.RobotDataException or InvalidOperationException)

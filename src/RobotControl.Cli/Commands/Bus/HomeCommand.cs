@@ -20,9 +20,9 @@ internal sealed class HomeCommand : ICliCommand
             {
                 var bus = session.RequireRobot();
                 var report = bus.Discover();
-                foreach (var line in report.Lines().Where(l => !l.StartsWith("found", StringComparison.Ordinal)))
+                foreach (var problem in report.Problems)
                 {
-                    output.WriteLine(line);
+                    output.WriteLine(problem.Line);
                 }
 
                 var results = bus.Home();

@@ -1,7 +1,7 @@
 using System.Globalization;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Robot.Modules;
+using RobotControl.Modules;
 
 namespace RobotControl.Cli.Commands.Bus;
 

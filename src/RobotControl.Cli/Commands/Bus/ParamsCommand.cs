@@ -1,7 +1,7 @@
 using System.CommandLine;
 using RobotControl.Bus.Protocol;
 using RobotControl.Cli.Options;
-using RobotControl.Robot.Modules;
+using RobotControl.Modules;
 
 namespace RobotControl.Cli.Commands.Bus;
 

@@ -3,13 +3,11 @@ using System.Globalization;
 using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
 using RobotControl.Hardware.Loading;
-using RobotControl.Plugins.CoppeliaSim;
-using RobotControl.Plugins.Standard.Conditioning;
-using RobotControl.Plugins.Touch;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Plugins;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;
-using RobotControl.Runtime.Harness;
 using Spectre.Console;
 
 namespace RobotControl.Cli.Commands.Run;
@@ -59,16 +57,7 @@ internal sealed class RunCommand : ICliCommand
     }
 
     /// <summary>The catalogue of the host's plug-in types (standard, Touch, CoppeliaSim), plus a plug-ins folder.</summary>
-    internal static PluginCatalog Catalog(string? pluginsFolder)
-    {
-        var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly, typeof(CoppeliaSimPlugin).Assembly);
-        if (pluginsFolder is not null)
-        {
-            catalog.AddFolder(pluginsFolder);
-        }
-
-        return catalog;
-    }
+    internal static PluginCatalog Catalog(string? pluginsFolder) => HostPlugins.Catalog(pluginsFolder);
 
     /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
     internal static int Run(string graphPath, bool isVirtual, TimeSpan duration, string? reportPath, string? injectText, string? pluginsFolder, int seed, IReadOnlyList<string> settingOverrides, TextWriter output, TextWriter error)

@@ -1,0 +1,189 @@
+using System.Globalization;
+using RobotControl.Hardware.Model;
+using RobotControl.Host.Session;
+using RobotControl.Robot.Bus;
+using RobotControl.Robot.Control;
+using RobotControl.Runtime.Discovery;
+using RobotControl.Runtime.GraphFiles;
+using RobotControl.Runtime.Loop;
+using RobotControl.Runtime.Robot;
+using RobotControl.Simulation.Bus;
+
+namespace RobotControl.Host.Harness;
+
+/// <summary>
+/// The headless run: brings a <see cref="RobotSession"/> up from a graph file (the virtual robot running the real
+/// module firmware on a virtual clock, or the graph's transport in real time), runs the control loop for a duration
+/// while measuring tick times, deadline misses and tracking error, and reports bus statistics and faults.
+/// Deterministic on the virtual robot (<see cref="VirtualSchedule"/>): the same graph, duration, faults and seed give
+/// the same report (tick times apart, which are measured CPU time).
+/// </summary>
+public static class HeadlessRun
+{
+    /// <summary>Runs <paramref name="options"/> with plug-in types from <paramref name="catalog"/>.</summary>
+    /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
+    /// <exception cref="InvalidOperationException">The graph names no robot, or the robot cannot be brought up.</exception>
+    public static RunReport Run(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress = null)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        ArgumentNullException.ThrowIfNull(catalog);
+        return options.Virtual ? RunVirtual(options, catalog, progress, null) : RunRealTime(options, catalog, progress);
+    }
+
+    /// <summary>A virtual run with measurement hooks (benchmarks): a wrapper around the bus link, and one around each tick.</summary>
+    internal static RunReport RunVirtual(RunOptions options, PluginCatalog catalog, VirtualRunHooks hooks) => RunVirtual(options, catalog, null, hooks);
+
+    /// <summary>Joint angles per arm that the graph will command first (the initial values on the wires into the robot node).</summary>
+    public static IReadOnlyList<double[]> InitialCommand(LoadedGraph loaded) => RobotSession.InitialCommand(loaded);
+
+    private static RunReport RunVirtual(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
+    {
+        TrackingMeter? meter = null;
+        using var session = RobotSession.Open(
+            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
+            catalog);
+        var bus = session.Robot;
+        var sim = session.Simulation!;
+        var clock = session.Clock;
+        var faults = new List<FaultEntry>();
+        DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
+        var begin = clock.GetTimestamp();
+        foreach (var reset in options.Inject.Resets)
+        {
+            sim.ScheduleReset(ResolveModule(session.Graph.Robot!, reset.Module), sim.Elapsed + reset.At);
+        }
+
+        if (options.Inject.BitErrorRate > 0)
+        {
+            sim.WireFaults = new WireFaults { BitErrorRate = options.Inject.BitErrorRate };
+        }
+
+        var loop = session.Loop;
+        var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
+        var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
+        var reported = 0L;
+        session.RunVirtual(
+            ticks,
+            () =>
+            {
+                if (loop.TickCount - reported >= progressEvery || loop.TickCount >= ticks)
+                {
+                    reported = loop.TickCount;
+                    var elapsed = clock.GetElapsedTime(begin);
+                    DrainEvents(bus, elapsed, faults);
+                    progress?.Invoke(Progress(loop, meter!, elapsed, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
+                }
+            },
+            hooks?.AroundTick);
+        DrainEvents(bus, clock.GetElapsedTime(begin), faults);
+        return Report(loop, meter!, clock.GetElapsedTime(begin), session.Graph, bus, faults);
+    }
+
+    private static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress)
+    {
+        if (!options.Inject.IsNone)
+        {
+            throw new InvalidOperationException("--inject applies to the virtual robot only (add --virtual)");
+        }
+
+        TrackingMeter? meter = null;
+        using var session = RobotSession.Open(
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = false, SettingOverrides = options.SettingOverrides, Observer = (node, port) => Meter(node, port, out meter) },
+            catalog);
+        var bus = session.Robot;
+        var loop = session.Loop;
+        var clock = session.Clock;
+        var faults = new List<FaultEntry>();
+        DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
+        var begin = clock.GetTimestamp();
+        session.StartRealtime();
+        try
+        {
+            while (clock.GetElapsedTime(begin) < options.Duration && loop.ThreadFailure is null)
+            {
+                Thread.Sleep(options.ProgressInterval < options.Duration ? options.ProgressInterval : options.Duration);
+                DrainEvents(bus, clock.GetElapsedTime(begin), faults);
+                progress?.Invoke(Progress(loop, meter!, clock.GetElapsedTime(begin), options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
+            }
+        }
+        finally
+        {
+            session.Stop();
+        }
+
+        if (loop.ThreadFailure is { } failure)
+        {
+            faults.Add(new FaultEntry(clock.GetElapsedTime(begin).TotalSeconds, "harness", $"control loop failed: {failure.Message}"));
+        }
+
+        DrainEvents(bus, clock.GetElapsedTime(begin), faults);
+        return Report(loop, meter!, clock.GetElapsedTime(begin), session.Graph, bus, faults);
+    }
+
+    private static TrackingMeter Meter(RobotNode node, IRobotPort port, out TrackingMeter meter) => meter = new TrackingMeter(node, port);
+
+    private static RunProgress Progress(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, TimeSpan duration, int faults, string robotFaults) =>
+        new(elapsed, duration, loop.TickCount, loop.Statistics.DeadlineMisses, meter.RmsMm, meter.LastErrorMm.Max(), faults, robotFaults);
+
+    private static RunReport Report(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, LoadedGraph loaded, BusRobot bus, List<FaultEntry> faults)
+    {
+        var all = faults
+            .Concat(loaded.Program.Faults.Select(f => new FaultEntry(f.Time.TotalSeconds, f.Instance, f.Message)))
+            .OrderBy(f => f.TimeSeconds)
+            .ToList();
+        if (loaded.RobotNode is { RejectedSetpoints: > 0 } node)
+        {
+            all.Add(new FaultEntry(elapsed.TotalSeconds, RobotNode.InstanceName, $"{node.RejectedSetpoints} non-finite setpoint vectors refused"));
+        }
+
+        long frames = 0, crc = 0, timeouts = 0, retries = 0;
+        foreach (var controller in bus.Controllers)
+        {
+            var s = bus.Client.Statistics(controller.Id);
+            frames += s.FramesSent + s.FramesReceived;
+            crc += s.CrcErrors;
+            timeouts += s.Timeouts;
+            retries += s.Retries;
+        }
+
+        var stats = loop.Statistics;
+        return new RunReport(
+            elapsed.TotalSeconds,
+            loop.TickCount,
+            stats.DeadlineMisses,
+            stats.MedianUs,
+            stats.P99Us,
+            stats.MaxUs,
+            meter.RmsMm,
+            meter.MaxMm,
+            new BusReport(frames, crc, timeouts, retries),
+            all);
+    }
+
+    private static void DrainEvents(BusRobot bus, TimeSpan at, List<FaultEntry> faults)
+    {
+        while (bus.Events.TryDequeue(out var e))
+        {
+            faults.Add(new FaultEntry(at.TotalSeconds, "robot", e.Message.Trim()));
+        }
+    }
+
+    private static byte ResolveModule(RobotDefinition robot, string module)
+    {
+        if (byte.TryParse(module, NumberStyles.None, CultureInfo.InvariantCulture, out var id) && robot.Modules.ById(id) is not null)
+        {
+            return id;
+        }
+
+        foreach (var m in robot.Modules.Modules)
+        {
+            var arm = m.Arm >= 0 && m.Arm < robot.Arms.Count ? robot.Arms[m.Arm].Name : "";
+            if (string.Equals($"{arm}.{m.Location}", module, StringComparison.OrdinalIgnoreCase) || string.Equals(m.Name, module, StringComparison.OrdinalIgnoreCase))
+            {
+                return m.Id;
+            }
+        }
+
+        throw new FormatException($"--inject: no module '{module}' (known: {string.Join(", ", robot.Modules.Modules.Select(m => $"{(m.Arm >= 0 && m.Arm < robot.Arms.Count ? robot.Arms[m.Arm].Name : "?")}.{m.Location} (id {m.Id})"))})");
+    }
+}

@@ -1,0 +1,40 @@
+namespace RobotControl.Host.Harness;
+
+/// <summary>What a headless run does.</summary>
+public sealed record RunOptions
+{
+    /// <summary>The graph file.</summary>
+    public required string GraphPath { get; init; }
+
+    /// <summary>
+    /// True: the virtual robot (real firmware, simulated motors) on a virtual clock, stepped deterministically as fast
+    /// as the machine goes. False: the graph's transport on the system clock, in real time.
+    /// </summary>
+    public bool Virtual { get; init; } = true;
+
+    /// <summary>Loop time to run.</summary>
+    public TimeSpan Duration { get; init; } = TimeSpan.FromSeconds(20);
+
+    /// <summary>Faults injected into the virtual robot.</summary>
+    public FaultInjection Inject { get; init; } = FaultInjection.None;
+
+    /// <summary>Seed of the virtual robot's random sources (noise, wire faults).</summary>
+    public int Seed { get; init; } = 1;
+
+    /// <summary>How often (loop time) progress is reported.</summary>
+    public TimeSpan ProgressInterval { get; init; } = TimeSpan.FromMilliseconds(250);
+
+    /// <summary>Settings of graph instances replaced for this run (<c>--set</c>), validated as the file's own.</summary>
+    public IReadOnlyList<GraphFiles.SettingOverride> SettingOverrides { get; init; } = [];
+}
+
+/// <summary>A progress sample of a running harness.</summary>
+/// <param name="Elapsed">Loop time so far.</param>
+/// <param name="Duration">Loop time planned.</param>
+/// <param name="Ticks">Ticks so far.</param>
+/// <param name="DeadlineMisses">Deadline misses so far.</param>
+/// <param name="TrackingRmsMm">RMS tracking error so far.</param>
+/// <param name="TrackingNowMm">Largest current tracking error over the arms.</param>
+/// <param name="Faults">Faults so far.</param>
+/// <param name="RobotFaults">The robot's fault flags now.</param>
+public sealed record RunProgress(TimeSpan Elapsed, TimeSpan Duration, long Ticks, long DeadlineMisses, double TrackingRmsMm, double TrackingNowMm, int Faults, string RobotFaults);

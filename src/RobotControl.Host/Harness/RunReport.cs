@@ -1,0 +1,87 @@
+using System.Text;
+using System.Text.Json;
+
+namespace RobotControl.Host.Harness;
+
+/// <summary>
+/// The outcome of a headless run, written as <c>report.json</c>:
+/// <c>{"duration_s", "ticks", "deadline_misses", "tick_us": {"median", "p99", "max"}, "tracking_error_mm": {"rms",
+/// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries"}, "faults": [...]}</c>.
+/// </summary>
+/// <param name="DurationSeconds">Loop time covered, seconds.</param>
+/// <param name="Ticks">Ticks run.</param>
+/// <param name="DeadlineMisses">Ticks that missed their deadline on the loop clock.</param>
+/// <param name="TickMedianUs">Median tick time (CPU, Stopwatch), microseconds.</param>
+/// <param name="TickP99Us">99th-percentile tick time, microseconds.</param>
+/// <param name="TickMaxUs">Longest tick, microseconds.</param>
+/// <param name="TrackingRmsMm">RMS tracking error, mm.</param>
+/// <param name="TrackingMaxMm">Largest tracking error, mm.</param>
+/// <param name="Bus">Bus statistics.</param>
+/// <param name="Faults">Everything that went wrong, in time order.</param>
+public sealed record RunReport(
+    double DurationSeconds,
+    long Ticks,
+    long DeadlineMisses,
+    double TickMedianUs,
+    double TickP99Us,
+    double TickMaxUs,
+    double TrackingRmsMm,
+    double TrackingMaxMm,
+    BusReport Bus,
+    IReadOnlyList<FaultEntry> Faults)
+{
+    /// <summary>The report as JSON in the documented schema.</summary>
+    public string ToJson()
+    {
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        {
+            w.WriteStartObject();
+            w.WriteNumber("duration_s", Math.Round(DurationSeconds, 6));
+            w.WriteNumber("ticks", Ticks);
+            w.WriteNumber("deadline_misses", DeadlineMisses);
+            w.WriteStartObject("tick_us");
+            w.WriteNumber("median", Math.Round(TickMedianUs, 2));
+            w.WriteNumber("p99", Math.Round(TickP99Us, 2));
+            w.WriteNumber("max", Math.Round(TickMaxUs, 2));
+            w.WriteEndObject();
+            w.WriteStartObject("tracking_error_mm");
+            w.WriteNumber("rms", Math.Round(TrackingRmsMm, 4));
+            w.WriteNumber("max", Math.Round(TrackingMaxMm, 4));
+            w.WriteEndObject();
+            w.WriteStartObject("bus");
+            w.WriteNumber("frames", Bus.Frames);
+            w.WriteNumber("crc_errors", Bus.CrcErrors);
+            w.WriteNumber("timeouts", Bus.Timeouts);
+            w.WriteNumber("retries", Bus.Retries);
+            w.WriteEndObject();
+            w.WriteStartArray("faults");
+            foreach (var f in Faults)
+            {
+                w.WriteStartObject();
+                w.WriteNumber("time_s", Math.Round(f.TimeSeconds, 4));
+                w.WriteString("source", f.Source);
+                w.WriteString("message", f.Message);
+                w.WriteEndObject();
+            }
+
+            w.WriteEndArray();
+            w.WriteEndObject();
+        }
+
+        return Encoding.UTF8.GetString(stream.ToArray()) + Environment.NewLine;
+    }
+}
+
+/// <summary>Bus statistics of a run.</summary>
+/// <param name="Frames">Frames exchanged with the modules (requests addressed to them plus valid replies).</param>
+/// <param name="CrcErrors">Replies dropped for a bad CRC.</param>
+/// <param name="Timeouts">Replies that did not arrive in time.</param>
+/// <param name="Retries">Requests sent again.</param>
+public sealed record BusReport(long Frames, long CrcErrors, long Timeouts, long Retries);
+
+/// <summary>One fault in a run.</summary>
+/// <param name="TimeSeconds">Run time, seconds (when known; otherwise the end of the run).</param>
+/// <param name="Source">Where: a plug-in instance, <c>robot</c> or <c>harness</c>.</param>
+/// <param name="Message">What happened.</param>
+public sealed record FaultEntry(double TimeSeconds, string Source, string Message);

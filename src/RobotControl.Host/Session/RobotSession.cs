@@ -1,0 +1,194 @@
+using RobotControl.Bus.Transports;
+using RobotControl.Robot.Bus;
+using RobotControl.Runtime.Discovery;
+using RobotControl.Runtime.GraphFiles;
+using RobotControl.Runtime.Loop;
+using RobotControl.Runtime.Robot;
+using RobotControl.Simulation;
+using RobotControl.Simulation.Time;
+
+namespace RobotControl.Host.Session;
+
+/// <summary>
+/// The one place a robot session is brought up and down: graph file -> robot file -> transport (virtual, serial,
+/// USB, TCP) -> robot (discovered, motors on) -> graph attached to it -> control loop. Then either
+/// <see cref="RunVirtual"/> (a deterministic <see cref="VirtualSchedule"/> on the virtual clock) or
+/// <see cref="StartRealtime"/> / <see cref="Stop"/> (bus and loop on threads of their own, on the wall clock).
+/// Used by <c>robotctl run</c>, <c>bench loop</c> and, through <see cref="RobotConnection"/>, the bus commands.
+/// </summary>
+public sealed class RobotSession : IDisposable
+{
+    private readonly ManualTimeProvider? _loopClock;
+    private bool _running;
+
+    private RobotSession(LoadedGraph graph, RobotConnection connection, ManualTimeProvider? loopClock, DiscoveryReport discovery, ControlLoop loop)
+    {
+        Graph = graph;
+        Connection = connection;
+        _loopClock = loopClock;
+        Discovery = discovery;
+        Loop = loop;
+    }
+
+    /// <summary>The graph file, loaded.</summary>
+    public LoadedGraph Graph { get; }
+
+    /// <summary>The robot's bus.</summary>
+    public RobotConnection Connection { get; }
+
+    /// <summary>The robot layer.</summary>
+    public BusRobot Robot => Connection.Robot!;
+
+    /// <summary>The robot node of the graph (attached to <see cref="Robot"/>).</summary>
+    public RobotNode Node => Graph.RobotNode!;
+
+    /// <summary>The virtual robot (null on a real bus).</summary>
+    public VirtualRobot? Simulation => Connection.Simulation;
+
+    /// <summary>What discovery found when the session opened.</summary>
+    public DiscoveryReport Discovery { get; }
+
+    /// <summary>The control loop.</summary>
+    public ControlLoop Loop { get; }
+
+    /// <summary>The bus's clock (simulated or the system's): run time is measured on it.</summary>
+    public TimeProvider Clock => Connection.Clock;
+
+    /// <summary>True for a virtual session.</summary>
+    public bool IsVirtual => Simulation is not null;
+
+    /// <summary>Brings a session up: loads the graph, opens its robot, discovers the modules, turns the motors on, attaches the graph and builds the loop.</summary>
+    /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
+    /// <exception cref="InvalidOperationException">The graph names no robot, or a real session names a virtual transport.</exception>
+    /// <exception cref="IOException">The transport cannot be opened or a module refuses.</exception>
+    public static RobotSession Open(SessionOptions options, PluginCatalog catalog)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        ArgumentNullException.ThrowIfNull(catalog);
+        var loopClock = options.Virtual ? new ManualTimeProvider() : null;
+        var loaded = GraphFile.Load(options.GraphPath, catalog, loopClock ?? TimeProvider.System, options.SettingOverrides);
+        var robot = loaded.Robot ?? throw new InvalidOperationException($"{loaded.Path}: the graph names no robot file");
+        RobotConnection connection;
+        if (options.Virtual)
+        {
+            connection = RobotConnection.OpenVirtual(robot, new VirtualRobotOptions { InitialJointsRad = InitialCommand(loaded), Seed = options.Seed }, null, options.WrapLink);
+        }
+        else
+        {
+            var transport = loaded.Document.Transport;
+            if (transport.StartsWith("virtual", StringComparison.OrdinalIgnoreCase))
+            {
+                throw new InvalidOperationException($"the graph's transport is '{transport}': run it with --virtual, or name a serial, usb or tcp transport");
+            }
+
+            connection = RobotConnection.OpenReal(LinkFactory.Open(transport), robot);
+        }
+
+        try
+        {
+            var bus = connection.Robot!;
+            var discovery = bus.Discover();
+            bus.EnableTorque(true);
+            loaded.RobotNode!.Attach(bus);
+            var observer = options.Observer?.Invoke(loaded.RobotNode!, bus);
+            var loop = new ControlLoop(loaded.Program, loopClock ?? TimeProvider.System, loaded.Document.LoopRateHz, observer);
+            return new RobotSession(loaded, connection, loopClock, discovery, loop);
+        }
+        catch
+        {
+            connection.Dispose();
+            throw;
+        }
+    }
+
+    /// <summary>Joint angles per arm that the graph will command first (the initial values on the wires into the robot node).</summary>
+    public static IReadOnlyList<double[]> InitialCommand(LoadedGraph loaded)
+    {
+        ArgumentNullException.ThrowIfNull(loaded);
+        var robot = loaded.Robot ?? throw new InvalidOperationException("the graph names no robot");
+        var outputs = loaded.Program.OutputSignals;
+        var result = new List<double[]>();
+        foreach (var arm in robot.Arms)
+        {
+            var q = robot.Joints.Select(j => j.MidRad).ToArray();
+            for (var j = 0; j < q.Length; j++)
+            {
+                var wire = loaded.Document.Wires.FirstOrDefault(w => w.To == $"{RobotNode.InstanceName}.{arm.Name}.{robot.Joints[j].Name}");
+                if (wire is not null)
+                {
+                    var index = IndexOf(outputs.Names, wire.From);
+                    q[j] = Math.Clamp(outputs.Values[index], robot.Joints[j].MinRad, robot.Joints[j].MaxRad);
+                }
+            }
+
+            result.Add(q);
+        }
+
+        return result;
+    }
+
+    /// <summary>
+    /// Runs <paramref name="ticks"/> loop ticks on the virtual schedule (as fast as the machine goes, deterministic);
+    /// <paramref name="afterCycle"/> runs after each bus cycle, <paramref name="aroundTick"/> (if given) runs each tick.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The session is not virtual, or already running.</exception>
+    public void RunVirtual(long ticks, Action? afterCycle = null, Action<ControlLoop, long>? aroundTick = null)
+    {
+        if (_loopClock is null || Connection.VirtualClock is null)
+        {
+            throw new InvalidOperationException("RunVirtual needs a virtual session (SessionOptions.Virtual)");
+        }
+
+        new VirtualSchedule(Robot, Connection.VirtualClock, _loopClock, Loop, ticks, aroundTick).Run(afterCycle);
+        Loop.Stop();
+    }
+
+    /// <summary>Starts the bus thread and the loop thread (real bus, wall clock).</summary>
+    /// <exception cref="InvalidOperationException">The session is virtual, or already running.</exception>
+    public void StartRealtime()
+    {
+        if (IsVirtual || _running)
+        {
+            throw new InvalidOperationException(IsVirtual ? "a virtual session runs on its schedule (RunVirtual)" : "the session is running already");
+        }
+
+        _running = true;
+        Robot.Start();
+        Loop.Start();
+    }
+
+    /// <summary>Stops the loop and the bus thread and turns the motors off (real bus).</summary>
+    public void Stop()
+    {
+        if (!_running)
+        {
+            return;
+        }
+
+        _running = false;
+        Loop.Stop();
+        Robot.Stop();
+        Robot.EnableTorque(false);
+    }
+
+    /// <inheritdoc />
+    public void Dispose()
+    {
+        Stop();
+        Loop.Dispose();
+        Connection.Dispose();
+    }
+
+    private static int IndexOf(IReadOnlyList<string> names, string name)
+    {
+        for (var i = 0; i < names.Count; i++)
+        {
+            if (names[i] == name)
+            {
+                return i;
+            }
+        }
+
+        return -1;
+    }
+}

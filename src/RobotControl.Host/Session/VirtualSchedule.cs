@@ -1,0 +1,100 @@
+using RobotControl.Robot.Bus;
+using RobotControl.Runtime.Loop;
+using RobotControl.Simulation.Time;
+
+namespace RobotControl.Host.Session;
+
+/// <summary>
+/// The deterministic schedule of a virtual session: it owns the loop's clock and calls the cycle's steps
+/// (<see cref="IBusCycle"/>) in order, on one thread, nothing nested in anything else:
+/// <list type="number">
+/// <item><b>read</b> (<see cref="BusRobot.Read"/>): the feedback crosses the virtual wire; the bus clock moves as the
+/// bytes take their time and the firmware and motor models run.</item>
+/// <item><b>tick</b>: every loop tick whose instant has now passed runs, at that instant (the loop clock is set to
+/// it). The feedback just read is not published yet, so a tick sees what was published before its instant.</item>
+/// <item><b>update</b> (<see cref="BusRobot.Update"/>): the feedback is published and the modules supervised
+/// (status polls take bus time too), followed by the ticks that came due meanwhile.</item>
+/// <item><b>write</b> (<see cref="BusRobot.Write"/>): the setpoints the ticks wrote become goals on the wire.</item>
+/// </list>
+/// This is the deterministic equivalent of a loop thread and a bus thread exchanging latest values: each tick sees
+/// and writes exactly what it would at its instant with two threads, whatever a bus cycle costs relative to the loop
+/// period. The same robot, graph, faults and seed give the same run.
+/// </summary>
+public sealed class VirtualSchedule
+{
+    private readonly IBusCycle _robot;
+    private readonly ManualTimeProvider _busClock;
+    private readonly ManualTimeProvider _loopClock;
+    private readonly ControlLoop _loop;
+    private readonly long _ticks;
+    private readonly long _period;
+    private readonly Action<ControlLoop, long> _tick;
+    private long _nextTick;
+
+    /// <summary>A schedule of <paramref name="ticks"/> loop ticks from now on <paramref name="busClock"/>.</summary>
+    /// <param name="robot">The robot whose cycle steps are called (a <see cref="BusRobot"/>).</param>
+    /// <param name="busClock">The virtual bus's clock (moved by the simulation).</param>
+    /// <param name="loopClock">The loop's clock (moved by this schedule, to each tick's instant).</param>
+    /// <param name="loop">The control loop, stepped once per tick.</param>
+    /// <param name="ticks">Ticks to run.</param>
+    /// <param name="aroundTick">Runs each tick instead of <see cref="ControlLoop.Step"/> (must call it once), given the tick's timestamp.</param>
+    public VirtualSchedule(IBusCycle robot, ManualTimeProvider busClock, ManualTimeProvider loopClock, ControlLoop loop, long ticks, Action<ControlLoop, long>? aroundTick = null)
+    {
+        ArgumentNullException.ThrowIfNull(robot);
+        ArgumentNullException.ThrowIfNull(busClock);
+        ArgumentNullException.ThrowIfNull(loopClock);
+        ArgumentNullException.ThrowIfNull(loop);
+        ArgumentOutOfRangeException.ThrowIfNegative(ticks);
+        _robot = robot;
+        _busClock = busClock;
+        _loopClock = loopClock;
+        _loop = loop;
+        _ticks = ticks;
+        _period = loop.Period.Ticks;
+        _tick = aroundTick ?? ((l, _) => l.Step());
+        var now = busClock.GetTimestamp();
+        loopClock.SetTimestamp(now);
+        _nextTick = now + _period;
+    }
+
+    /// <summary>Runs cycles until every tick has run; <paramref name="afterCycle"/> runs after each (progress, events).</summary>
+    public void Run(Action? afterCycle = null)
+    {
+        if (_loop.TickCount >= _ticks)
+        {
+            return;
+        }
+
+        _robot.Write();
+        while (true)
+        {
+            _robot.Read();
+            TickDue();
+            _robot.Update();
+            TickDue();
+            afterCycle?.Invoke();
+            if (_loop.TickCount >= _ticks)
+            {
+                return;
+            }
+
+            _robot.Write();
+        }
+    }
+
+    /// <summary>Runs every tick due by the bus clock's now, each at its own instant on the loop clock.</summary>
+    private void TickDue()
+    {
+        var now = _busClock.GetTimestamp();
+        while (_nextTick <= now)
+        {
+            if (_loop.TickCount < _ticks)
+            {
+                _loopClock.SetTimestamp(_nextTick);
+                _tick(_loop, _nextTick);
+            }
+
+            _nextTick += _period;
+        }
+    }
+}

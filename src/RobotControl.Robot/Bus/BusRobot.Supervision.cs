@@ -1,0 +1,159 @@
+using System.Buffers.Binary;
+using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
+using RobotControl.Modules;
+using RobotControl.Robot.Control;
+using RobotControl.Robot.Events;
+using RobotControl.Robot.States;
+
+namespace RobotControl.Robot.Bus;
+
+/// <summary>Module supervision: status poll, resets, watchdog, faults cleared, modules found again.</summary>
+public sealed partial class BusRobot
+{
+    private void PollStatus()
+    {
+        if (_ids.Length == 0)
+        {
+            return;
+        }
+
+        _client.SyncRead(_statusAddress, 2, _ids, _statusData, _statusReplies);
+        for (var i = 0; i < _active.Length; i++)
+        {
+            if (_statusReplies[i].Outcome != ReplyOutcome.Ok)
+            {
+                continue;
+            }
+
+            var c = _active[i];
+            var status = (HardwareErrors)_statusData[2 * i];
+            var cause = _statusData[(2 * i) + 1];
+            c.HardwareErrorStatus = status.Value;
+            if (cause != 0)
+            {
+                HandleReset(c, cause, status);
+            }
+
+            if (status.HasAny(HardwareErrors.BusWatchdog) && (_latchedFaults & (int)RobotFaults.WatchdogTripped) == 0)
+            {
+                SetLatched(RobotFaults.WatchdogTripped);
+                Events.Enqueue(new WatchdogTripped(c.Id, c.Name));
+                EnterFault($"module {c.Id} \"{c.Name}\": bus watchdog tripped");
+            }
+
+            if (status.HasAny(HardwareErrors.Hall | HardwareErrors.PotMismatch) && (_latchedFaults & (int)RobotFaults.HardwareError) == 0)
+            {
+                SetLatched(RobotFaults.HardwareError);
+                Events.Enqueue(new HardwareErrorLatched(c.Id, c.Name, status));
+                EnterFault($"module {c.Id} \"{c.Name}\": hardware error {status}");
+            }
+
+            // The firmware latches over-current whenever a current limit engages: that is the limit doing its job
+            // (CurrentLimited), not a fault. Acknowledge it when nothing else is latched, so the alert flag clears.
+            if (status.HasAny(HardwareErrors.OverCurrent))
+            {
+                SetLive(RobotFaults.CurrentLimited, true);
+                if ((status & ~(HardwareErrors.OverCurrent | HardwareErrors.PositionLost)).IsNone)
+                {
+                    _ = _client.Write(c.Id, _statusAddress, [0]);
+                    c.HardwareErrorStatus = 0;
+                }
+            }
+        }
+    }
+
+    private void HandleReset(RobotController c, byte cause, HardwareErrors status)
+    {
+        c.Resets++;
+        SetLatched(RobotFaults.ModuleReset);
+        var why = _resetCauses.TryGetValue(cause, out var name) ? name : $"cause {cause}";
+        var resumed = !status.HasAny(HardwareErrors.PositionLost);
+        var mismatch = status.HasAny(HardwareErrors.PotMismatch);
+        Events.Enqueue(new ModuleResetEvent(c.Id, c.Name, why, resumed, mismatch));
+        _ = _client.Write(c.Id, _resetCauseAddress, [0]);
+        if (!mismatch && _torqueEnabled)
+        {
+            Arm(c, true);
+        }
+        else if (mismatch)
+        {
+            SetLatched(RobotFaults.HardwareError);
+            EnterFault($"module {c.Id} \"{c.Name}\" reset and its position disagrees with the pot");
+        }
+    }
+
+    private void Arm(RobotController c, bool on)
+    {
+        Span<byte> watchdog = stackalloc byte[2];
+        BinaryPrimitives.WriteUInt16LittleEndian(watchdog, (ushort)(on ? _watchdogMs : 0));
+        Span<byte> torque = stackalloc byte[c.ChannelSpan];
+        foreach (var m in c.Motors)
+        {
+            torque[m.Config.Channel] = on ? (byte)1 : (byte)0;
+        }
+
+        // Torque first, then the watchdog: a stall between the two writes must not trip a watchdog that refuses the torque.
+        var t = _client.Write(c.Id, _torqueAddress, torque);
+        var w = _client.Write(c.Id, _watchdogAddress, watchdog);
+        if (!w.Succeeded || !t.Succeeded)
+        {
+            Span<byte> status = stackalloc byte[2];
+            var known = _client.Read(c.Id, _statusAddress, status).Succeeded;
+            throw new IOException(TorqueRefusal.Describe(c.Id, c.Name, on, t, w, known ? ((HardwareErrors)status[0], status[1]) : null));
+        }
+    }
+
+    private void ClearInModules()
+    {
+        foreach (var c in _active)
+        {
+            _ = _client.Write(c.Id, _statusAddress, [0, 0]);
+            c.HardwareErrorStatus = 0;
+            if (_torqueEnabled)
+            {
+                try
+                {
+                    Arm(c, true);
+                }
+                catch (IOException ex)
+                {
+                    Events.Enqueue(new TorqueRefused(ex.Message));
+                }
+            }
+        }
+
+        Volatile.Write(ref _latchedFaults, 0);
+        if (_state.Current == RobotState.Fault)
+        {
+            _state.MoveTo(_torqueEnabled ? RobotState.Enabled : MotorsOffState, "faults cleared");
+        }
+    }
+
+    /// <summary>A module stopped its motors or latched an error: the robot is in <see cref="RobotState.Fault"/> until faults are cleared or the motors turned off.</summary>
+    private void EnterFault(string reason)
+    {
+        if (_state.CanMoveTo(RobotState.Fault))
+        {
+            _state.MoveTo(RobotState.Fault, reason);
+        }
+    }
+
+    private void Reprobe()
+    {
+        foreach (var c in _controllers)
+        {
+            if (c.Present || _client.Ping(c.Id, out var info).Outcome != ReplyOutcome.Ok)
+            {
+                continue;
+            }
+
+            c.ModelNumber = info.ModelNumber;
+            c.FirmwareVersion = info.FirmwareVersion;
+            c.ConsecutiveMisses = 0;
+            Volatile.Write(ref c.PresentFlag, true);
+            Events.Enqueue(new ModuleAnswersAgain(c.Id, c.Name));
+            RebuildActive();
+        }
+    }
+}

@@ -1,0 +1,112 @@
+using RobotControl.Host.Session;
+using RobotControl.Plugins.Sdk;
+using RobotControl.Robot.Bus;
+using RobotControl.Runtime.Graph;
+using RobotControl.Runtime.Loop;
+using RobotControl.Simulation.Time;
+
+namespace RobotControl.Host.Tests.Session;
+
+public sealed class VirtualScheduleTests
+{
+    /// <summary>A bus cycle that records its steps and takes bus time like a wire: read 700 us, update 0 us or, every third cycle, a status poll.</summary>
+    private sealed class RecordingCycle(ManualTimeProvider busClock, List<string> log, int pollUs = 300) : IBusCycle
+    {
+        private int _updates;
+
+        public bool InStep { get; private set; }
+
+        public void Write() => Step("write", TimeSpan.Zero);
+
+        public void Read() => Step("read", TimeSpan.FromMicroseconds(700));
+
+        public void Update() => Step("update", ++_updates % 3 == 0 ? TimeSpan.FromMicroseconds(pollUs) : TimeSpan.Zero);
+
+        private void Step(string name, TimeSpan busTime)
+        {
+            InStep = true;
+            log.Add($"{name}@{busClock.GetTimestamp()}");
+            busClock.Advance(busTime);
+            InStep = false;
+        }
+    }
+
+    private sealed class Probe(string name, List<string> log) : Plugin(PluginContext.Standalone(name))
+    {
+        public override void Tick(in TickContext context) => log.Add($"tick@{context.Timestamp}");
+    }
+
+    [Fact]
+    public void The_cycle_is_read_tick_update_write_and_every_tick_runs_at_its_own_instant_between_steps()
+    {
+        var busClock = new ManualTimeProvider();
+        busClock.Advance(TimeSpan.FromMilliseconds(5)); // bring-up took bus time
+        var loopClock = new ManualTimeProvider();
+        var log = new List<string>();
+        var cycle = new RecordingCycle(busClock, log);
+        var graph = new PluginGraph();
+        graph.Add(new Probe("probe", log));
+        using var loop = new ControlLoop(graph.Compile(), loopClock, 1000);
+        var dues = new List<long>();
+        var schedule = new VirtualSchedule(cycle, busClock, loopClock, loop, 5, (l, due) =>
+        {
+            Assert.False(cycle.InStep, "a tick ran inside a bus step");
+            Assert.Equal(due, loopClock.GetTimestamp());
+            dues.Add(due);
+            l.Step();
+        });
+        var cycles = 0;
+        schedule.Run(() => cycles++);
+
+        const long Ms = 10_000; // timestamp ticks per millisecond
+        Assert.Equal(5, loop.TickCount);
+        Assert.Equal([6 * Ms, 7 * Ms, 8 * Ms, 9 * Ms, 10 * Ms], dues);
+
+        // Bus time: write 5.0, read 5.0-5.7, update; write 5.7, read 5.7-6.4 (tick 6 fell due: it runs after the read), ...
+        Assert.Equal(
+            [
+                "write@50000", "read@50000", "update@57000",
+                "write@57000", "read@57000", "tick@60000", "update@64000",
+                "write@64000", "read@64000", "tick@70000", "update@71000",
+                "write@74000", "read@74000", "tick@80000", "update@81000",
+                "write@81000", "read@81000", "update@88000",
+                "write@88000", "read@88000", "tick@90000", "update@95000",
+                "write@98000", "read@98000", "tick@100000", "update@105000",
+            ],
+            log);
+        Assert.Equal(7, cycles);
+    }
+
+    [Fact]
+    public void Ticks_due_during_the_update_run_after_it_and_before_the_next_write()
+    {
+        var busClock = new ManualTimeProvider();
+        var loopClock = new ManualTimeProvider();
+        var log = new List<string>();
+        var cycle = new RecordingCycle(busClock, log, pollUs: 1200);
+        var graph = new PluginGraph();
+        graph.Add(new Probe("probe", log));
+        using var loop = new ControlLoop(graph.Compile(), loopClock, 1000);
+        new VirtualSchedule(cycle, busClock, loopClock, loop, 3).Run();
+
+        // The third update is a 1.2 ms status poll (2.1-3.3 ms): the tick due at 3 ms runs after it, before any write.
+        Assert.Equal(
+            [
+                "write@0", "read@0", "update@7000",
+                "write@7000", "read@7000", "tick@10000", "update@14000",
+                "write@14000", "read@14000", "tick@20000", "update@21000", "tick@30000",
+            ],
+            log);
+        Assert.Equal(0, loop.Statistics.DeadlineMisses);
+    }
+
+    [Fact]
+    public void Zero_ticks_runs_no_cycle()
+    {
+        var busClock = new ManualTimeProvider();
+        var log = new List<string>();
+        using var loop = new ControlLoop(new PluginGraph().Compile(), new ManualTimeProvider(), 1000);
+        new VirtualSchedule(new RecordingCycle(busClock, log), busClock, new ManualTimeProvider(), loop, 0).Run();
+        Assert.Empty(log);
+    }
+}
