@@ -50,9 +50,9 @@ public static class ParameterRules
         if (changed is null || changed == "pot_cal_count" || changed == "pot_cal_step" || changed.StartsWith("pot_cal_raw", StringComparison.Ordinal))
         {
             var count = value("pot_cal_count", motor);
-            if (count == 1 || count < 0 || count > ModuleParameters.PotPoints)
+            if (count == 1 || count < 0 || count > PotCalibrationTable.MaxPoints)
             {
-                problems.Add(string.Create(CultureInfo.InvariantCulture, $"motor {motor}: pot_cal_count {count} must be 0 (no pot homing) or 2..{ModuleParameters.PotPoints} points"));
+                problems.Add(string.Create(CultureInfo.InvariantCulture, $"motor {motor}: pot_cal_count {count} must be 0 (no pot homing) or 2..{PotCalibrationTable.MaxPoints} points"));
             }
             else if (count >= 2)
             {

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Loading;
 using System.Text.Json.Nodes;
 using RobotControl.Bus.Client;
 using RobotControl.Hardware.Model;
@@ -38,7 +39,7 @@ public sealed class VirtualLb : IDisposable
     /// <summary>The LB as a misconfigured host sees it: the left forearm moved to ID 20 (not on the bus), the right forearm (ID 3) forgotten.</summary>
     public static RobotDefinition MisconfiguredHostView()
     {
-        var json = JsonNode.Parse(File.ReadAllText(RepoPaths.Robot("lb-1.0.json")))!;
+        var json = JsonNode.Parse(File.ReadAllText(RepositoryPaths.Robot("lb-1.0.json")))!;
         var layout = json["modules"]!["layout"]!.AsArray();
         layout.RemoveAt(2);
         foreach (var m in layout)
@@ -49,7 +50,7 @@ public sealed class VirtualLb : IDisposable
             }
         }
 
-        return RobotLoader.LoadFromText(json.ToJsonString(), RepoPaths.Robot("edited.json"));
+        return RobotLoader.LoadFromText(json.ToJsonString(), RepositoryPaths.Robot("edited.json"));
     }
 
     public void Dispose()

@@ -4,7 +4,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using RobotControl.Cli.Output;
-using RobotControl.Runtime.Harness;
+using RobotControl.Host.Harness;
 
 namespace RobotControl.Cli.Options;
 

@@ -25,7 +25,7 @@ public sealed record RunOptions
     public TimeSpan ProgressInterval { get; init; } = TimeSpan.FromMilliseconds(250);
 
     /// <summary>Settings of graph instances replaced for this run (<c>--set</c>), validated as the file's own.</summary>
-    public IReadOnlyList<GraphFiles.SettingOverride> SettingOverrides { get; init; } = [];
+    public IReadOnlyList<RobotControl.Runtime.GraphFiles.SettingOverride> SettingOverrides { get; init; } = [];
 }
 
 /// <summary>A progress sample of a running harness.</summary>

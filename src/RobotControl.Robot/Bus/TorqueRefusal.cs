@@ -1,5 +1,6 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
+using RobotControl.Modules;
 
 namespace RobotControl.Robot.Bus;
 

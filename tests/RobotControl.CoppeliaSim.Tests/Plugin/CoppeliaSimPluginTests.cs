@@ -2,7 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using RobotControl.Plugins.CoppeliaSim;
 using RobotControl.Runtime.GraphFiles;
-using RobotControl.Runtime.Harness;
+using RobotControl.Host.Harness;
 using RobotControl.Runtime.Loop;
 
 namespace RobotControl.CoppeliaSim.Tests.Plugin;
@@ -23,7 +23,7 @@ public sealed class CoppeliaSimPluginTests
         var wall = Stopwatch.StartNew();
         var hooks = new VirtualRunHooks
         {
-            AroundTick = loop =>
+            AroundTick = (loop, _) =>
             {
                 loop.Step();
                 Pace(loop, wall);
@@ -81,7 +81,7 @@ public sealed class CoppeliaSimPluginTests
         var wall = Stopwatch.StartNew();
         var hooks = new VirtualRunHooks
         {
-            AroundTick = loop =>
+            AroundTick = (loop, _) =>
             {
                 loop.Step();
                 Pace(loop, wall);

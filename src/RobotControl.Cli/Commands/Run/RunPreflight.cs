@@ -2,7 +2,7 @@ using System.Globalization;
 using RobotControl.Bus.Transports;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.GraphFiles;
-using RobotControl.Runtime.Harness;
+using RobotControl.Host.Harness;
 using RobotControl.Simulation.Time;
 
 namespace RobotControl.Cli.Commands.Run;
