@@ -22,7 +22,7 @@ internal sealed class RunCommand : ICliCommand
         var isVirtual = new Option<bool>("--virtual") { Description = "Run against the virtual robot (real firmware, simulated motors) on a virtual clock, deterministically and as fast as possible" };
         var duration = new Option<string>("--duration") { Description = "Loop time to run, e.g. 20s, 500ms, 2m", DefaultValueFactory = _ => "20s" };
         var report = new Option<FileInfo?>("--report") { Description = "Write the report (JSON) to this file" };
-        var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: ber=<bit error rate>, reset=<arm.location|id>@<time> (comma-separated)" };
+        var inject = new Option<string?>("--inject") { Description = $"Faults for the virtual robot, comma-separated: {FaultInjection.Syntax} (see docs/safety.md)" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (one load context each)" };
         var seed = new Option<int>("--seed") { Description = "Seed of the virtual robot's noise and wire faults", DefaultValueFactory = _ => 1 };
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
@@ -102,7 +102,7 @@ internal sealed class RunCommand : ICliCommand
             output.WriteLine($"report: {reportPath}");
         }
 
-        return result.DeadlineMisses == 0 && result.Faults.Count == 0 ? 0 : 1;
+        return result.DeadlineMisses == 0 && result.Faults.Count == 0 && result.Safety is not { Trips.Count: > 0 } ? 0 : 1;
     }
 
     private static RunReport RunWithLines(RunOptions options, PluginCatalog catalog, TextWriter output)
@@ -145,6 +145,11 @@ internal sealed class RunCommand : ICliCommand
         output.WriteLine(string.Create(c, $"  tick time (us): median {r.TickMedianUs:F1}, p99 {r.TickP99Us:F1}, max {r.TickMaxUs:F1}"));
         output.WriteLine(string.Create(c, $"  tracking error (mm): rms {r.TrackingRmsMm:F3}, max {r.TrackingMaxMm:F3}"));
         output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries"));
+        foreach (var line in r.Safety?.Lines() ?? [])
+        {
+            output.WriteLine(line);
+        }
+
         output.WriteLine(string.Create(c, $"  faults: {r.Faults.Count}"));
         foreach (var f in r.Faults.Take(20))
         {
