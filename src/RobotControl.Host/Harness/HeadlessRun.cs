@@ -92,6 +92,7 @@ public static class HeadlessRun
 
                 safetyFaults.AfterTick(at);
             });
+        hooks?.AfterRun?.Invoke(session);
         DrainEvents(bus, clock.GetElapsedTime(begin), faults);
         return Report(loop, meter!, clock.GetElapsedTime(begin), session, faults);
     }
