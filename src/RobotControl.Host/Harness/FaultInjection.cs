@@ -7,7 +7,8 @@ namespace RobotControl.Host.Harness;
 /// a bit-error rate on the wire, module resets (module named <c>arm.location</c> or by bus ID, at a run time), and
 /// the safety faults (<see cref="TimedFaultKind"/>): <c>stall=100ms@5s</c> (the host stops for that long),
 /// <c>stuck=right.elbow@5s</c> (locked rotor), <c>current=right.elbow@5s</c> (current spike at the sensor),
-/// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint).
+/// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint), <c>silent=right.forearm@5s</c> (the module's
+/// replies stop).
 /// </summary>
 /// <param name="BitErrorRate">Probability that a bit on the wire flips.</param>
 /// <param name="Resets">Module resets: which module and when (run time).</param>
@@ -18,7 +19,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
     public static FaultInjection None { get; } = new(0, []);
 
     /// <summary>The syntax, for <c>--help</c> and messages.</summary>
-    public const string Syntax = "ber=<rate>, reset=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, nan=<plug-in>@<time>";
+    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, nan=<plug-in>@<time>";
 
     /// <summary>The safety faults (empty when none).</summary>
     public IReadOnlyList<TimedFault> TimedFaults => Timed ?? [];
@@ -61,6 +62,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
 
                     resets.Add(new ModuleReset(value[..at], RunDuration.Parse(value[(at + 1)..])));
                     break;
+                case "silent":
                 case "stall":
                 case "stuck":
                 case "current":
@@ -86,10 +88,10 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
         var at = value.LastIndexOf('@');
         if (at <= 0)
         {
-            throw new FormatException($"--inject '{part}': expected {key}=<{(key == "stall" ? "duration" : key == "nan" ? "plug-in" : "arm.motor")}>@<time>, e.g. {key}={(key == "stall" ? "100ms" : key == "nan" ? "ik_right" : "right.elbow")}@5s");
+            throw new FormatException($"--inject '{part}': expected {key}=<{key switch { "stall" => "duration", "nan" => "plug-in", "silent" => "arm.location or id", _ => "arm.motor" }}>@<time>, e.g. {key}={key switch { "stall" => "100ms", "nan" => "ik_right", "silent" => "right.forearm", _ => "right.elbow" }}@5s");
         }
 
-        var kind = key switch { "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, _ => TimedFaultKind.Nan };
+        var kind = key switch { "silent" => TimedFaultKind.Silent, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, _ => TimedFaultKind.Nan };
         var target = value[..at];
         var stall = kind == TimedFaultKind.Stall ? RunDuration.Parse(target) : TimeSpan.Zero;
         if (kind == TimedFaultKind.Stall && stall <= TimeSpan.Zero)
@@ -104,6 +106,9 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
 /// <summary>The safety faults <c>--inject</c> knows.</summary>
 public enum TimedFaultKind
 {
+    /// <summary>A module's replies stop reaching the host (it still hears the host).</summary>
+    Silent,
+
     /// <summary>The host stops (no bus traffic, no ticks) for a duration.</summary>
     Stall,
 

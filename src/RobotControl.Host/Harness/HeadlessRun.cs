@@ -1,4 +1,5 @@
 using System.Globalization;
+using RobotControl.Bus.Transports;
 using RobotControl.Hardware.Model;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
@@ -40,8 +41,9 @@ public static class HeadlessRun
     private static RunReport RunVirtual(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
     {
         TrackingMeter? meter = null;
+        SilentModuleLink? silentLink = null;
         using var session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
+            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, WrapLink = SilenceModules(options, hooks?.WrapLink, l => silentLink = l), Observer = (node, port) => Meter(node, port, out meter) },
             catalog);
         var bus = session.Robot;
         var sim = session.Simulation!;
@@ -57,6 +59,11 @@ public static class HeadlessRun
         if (options.Inject.BitErrorRate > 0)
         {
             sim.WireFaults = new WireFaults { BitErrorRate = options.Inject.BitErrorRate };
+        }
+
+        foreach (var f in options.Inject.TimedFaults.Where(f => f.Kind == TimedFaultKind.Silent))
+        {
+            silentLink!.Silence(ResolveModule(session.Graph.Robot!, f.Target), begin + (long)(f.At.TotalSeconds * clock.TimestampFrequency));
         }
 
         var safetyFaults = new SafetyFaultSchedule(options.Inject.TimedFaults, sim, bus, session.Graph, begin, clock.TimestampFrequency);
@@ -95,6 +102,22 @@ public static class HeadlessRun
         hooks?.AfterRun?.Invoke(session);
         DrainEvents(bus, clock.GetElapsedTime(begin), faults);
         return Report(loop, meter!, clock.GetElapsedTime(begin), session, faults);
+    }
+
+    /// <summary>The link wrapper for <c>silent=</c> faults (outermost: a measuring wrapper sees what the host sees), or <paramref name="wrap"/> alone without one.</summary>
+    private static Func<IByteLink, TimeProvider, IByteLink>? SilenceModules(RunOptions options, Func<IByteLink, TimeProvider, IByteLink>? wrap, Action<SilentModuleLink> made)
+    {
+        if (!options.Inject.TimedFaults.Any(f => f.Kind == TimedFaultKind.Silent))
+        {
+            return wrap;
+        }
+
+        return (link, clock) =>
+        {
+            var silent = new SilentModuleLink(wrap?.Invoke(link, clock) ?? link, clock);
+            made(silent);
+            return silent;
+        };
     }
 
     /// <summary>The shipped graphs have no pedal plug-in: the harness is the operator and holds the pedal down for the run.</summary>

@@ -31,7 +31,7 @@ internal sealed class SafetyFaultSchedule
         _robot = robot;
         _nan = new double[robot.Definition.JointCount];
         Array.Fill(_nan, double.NaN);
-        _pending = [.. faults.Select(f => Resolve(f, sim, graph, begin + (long)(f.At.TotalSeconds * frequency))).OrderBy(p => p.At)];
+        _pending = [.. faults.Where(f => f.Kind != TimedFaultKind.Silent).Select(f => Resolve(f, sim, graph, begin + (long)(f.At.TotalSeconds * frequency))).OrderBy(p => p.At)];
     }
 
     /// <summary>Faults not applied yet.</summary>

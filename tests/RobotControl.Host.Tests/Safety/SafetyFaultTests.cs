@@ -21,6 +21,18 @@ public sealed class SafetyFaultTests
     }
 
     [Fact]
+    public void A_silent_module_trips_module_silent_within_its_limit_and_turns_the_torque_off()
+    {
+        var run = SafetyRun.Of("silent=right.forearm@1s", 1.3);
+        var trip = run.Trip(SafetyCheck.ModuleSilent);
+        Assert.Equal("right.forearm", trip.Joint);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.010, 0.020); // 10 ms limit, checked once per bus cycle
+        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
+        AssertCommon(run, "module_silent");
+    }
+
+    [Fact]
     public void A_stuck_joint_trips_within_300_ms_and_turns_the_torque_off()
     {
         var run = SafetyRun.Of("stuck=right.elbow@1s", 1.5);

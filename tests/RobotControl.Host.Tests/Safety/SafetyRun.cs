@@ -63,12 +63,14 @@ internal sealed class SafetyRun
 
     /// <summary>
     /// The largest goal step any frame the virtual robot received made, as a fraction of the step cap (maximum output
-    /// speed times the time since the previous frame, plus one count of rounding).
+    /// speed times the time since the previous frame, plus one count of rounding), while the motors are driven: up to
+    /// the first torque-off trip, after which the goals only mirror the measured positions of motors that are off.
     /// </summary>
     public double WorstStepOverCap()
     {
         var worst = 0.0;
-        for (var k = 2; k < Spy.Frames.Count; k++)
+        var off = Safety.Trips.FirstOrDefault(t => t.Action == SafeState.TorqueOff)?.TimeSeconds ?? double.PositiveInfinity;
+        for (var k = 2; k < Spy.Frames.Count && Spy.Frames[k].TimeS - OriginS <= off; k++)
         {
             var (t0, g0) = Spy.Frames[k - 1];
             var (t1, g1) = Spy.Frames[k];
