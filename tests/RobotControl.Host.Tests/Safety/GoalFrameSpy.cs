@@ -14,6 +14,32 @@ internal sealed class GoalFrameSpy(IByteLink inner, TimeProvider clock, ushort g
     /// <summary>Every goal frame: bus time (s), module ID -> goal counts by channel.</summary>
     public List<(double TimeS, Dictionary<byte, int[]> Goals)> Frames { get; } = [];
 
+    /// <summary>
+    /// The largest goal step between consecutive frames (from frame <paramref name="first"/>, up to bus time
+    /// <paramref name="untilS"/>) as a fraction of the step cap: the motor's maximum output speed times the time
+    /// between the frames, plus one count of rounding. At most 1: no frame exceeded the cap.
+    /// </summary>
+    public double WorstStepOverCap(IEnumerable<(byte ModuleId, int Channel, double CountsPerRad, double SpeedLimitRadS)> motors, int first = 0, double untilS = double.PositiveInfinity)
+    {
+        var list = motors.ToList();
+        var worst = 0.0;
+        for (var k = Math.Max(first, 0) + 1; k < Frames.Count && Frames[k].TimeS <= untilS; k++)
+        {
+            var (t0, g0) = Frames[k - 1];
+            var (t1, g1) = Frames[k];
+            foreach (var m in list)
+            {
+                if (g0.TryGetValue(m.ModuleId, out var a) && g1.TryGetValue(m.ModuleId, out var b))
+                {
+                    var stepRad = Math.Abs(b[m.Channel] - a[m.Channel]) / m.CountsPerRad;
+                    worst = Math.Max(worst, stepRad / ((m.SpeedLimitRadS * (t1 - t0)) + (1 / m.CountsPerRad)));
+                }
+            }
+        }
+
+        return worst;
+    }
+
     public string Description => inner.Description;
 
     public int BaudRate => inner.BaudRate;

@@ -62,32 +62,14 @@ internal sealed class SafetyRun
         Safety.Trips.FirstOrDefault(t => t.Check == check) ?? throw new Xunit.Sdk.XunitException($"no {check.Name()} trip; trips: {string.Join("; ", Safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds}"))}");
 
     /// <summary>
-    /// The largest goal step any frame the virtual robot received made, as a fraction of the step cap (maximum output
-    /// speed times the time since the previous frame, plus one count of rounding), while the motors are driven: up to
-    /// the first torque-off trip, after which the goals only mirror the measured positions of motors that are off.
+    /// The largest goal step any frame the virtual robot received made, as a fraction of the step cap, while the motors
+    /// are driven: up to the first torque-off trip, after which the goals only mirror the measured positions of motors
+    /// that are off. The first frame (before any cap applies) is the reference.
     /// </summary>
     public double WorstStepOverCap()
     {
-        var worst = 0.0;
         var off = Safety.Trips.FirstOrDefault(t => t.Action == SafeState.TorqueOff)?.TimeSeconds ?? double.PositiveInfinity;
-        for (var k = 2; k < Spy.Frames.Count && Spy.Frames[k].TimeS - OriginS <= off; k++)
-        {
-            var (t0, g0) = Spy.Frames[k - 1];
-            var (t1, g1) = Spy.Frames[k];
-            foreach (var m in Motors)
-            {
-                if (!g0.TryGetValue(m.ModuleId, out var a) || !g1.TryGetValue(m.ModuleId, out var b))
-                {
-                    continue;
-                }
-
-                var stepRad = Math.Abs(b[m.Channel] - a[m.Channel]) / m.CountsPerRad;
-                var capRad = (m.SpeedLimitRadS * (t1 - t0)) + (1 / m.CountsPerRad);
-                worst = Math.Max(worst, stepRad / capRad);
-            }
-        }
-
-        return worst;
+        return Spy.WorstStepOverCap(Motors.Select(m => (m.ModuleId, m.Channel, m.CountsPerRad, m.SpeedLimitRadS)), 1, OriginS + off);
     }
 
     /// <summary>True when every goal frame from <paramref name="fromS"/> (run time) on carries the same goals.</summary>
@@ -101,21 +83,3 @@ internal sealed class SafetyRun
 
 /// <summary>A motor at the end of a run: what its virtual module does.</summary>
 internal sealed record MotorEnd(string Name, byte ModuleId, int Channel, double CountsPerRad, double SpeedLimitRadS, bool DriverEnabled, double OutputRad, double GoalRad);
-
-/// <summary>The repository's graph files.</summary>
-internal static class Graphs
-{
-    public static string Path(string name)
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            var path = System.IO.Path.Combine(dir.FullName, "graphs", name);
-            if (File.Exists(path))
-            {
-                return path;
-            }
-        }
-
-        throw new FileNotFoundException($"graphs/{name} not found above {AppContext.BaseDirectory}");
-    }
-}

@@ -24,18 +24,7 @@ public sealed class StepCapTests
         });
 
         Assert.True(robot.StepCapHits > 10, $"cap hits {robot.StepCapHits}");
-        var worst = 0.0;
-        for (var k = start + 1; k < spy.Frames.Count; k++)
-        {
-            var (t0, g0) = spy.Frames[k - 1];
-            var (t1, g1) = spy.Frames[k];
-            foreach (var m in robot.Motors)
-            {
-                var step = Math.Abs(g1[m.Config.ModuleId][m.Config.Channel] - g0[m.Config.ModuleId][m.Config.Channel]) / m.Config.CountsPerRad;
-                worst = Math.Max(worst, step / ((m.SpeedLimitRadS * (t1 - t0)) + (1 / m.Config.CountsPerRad)));
-            }
-        }
-
+        var worst = spy.WorstStepOverCap(robot.Motors.Select(m => (m.Config.ModuleId, m.Config.Channel, m.Config.CountsPerRad, m.SpeedLimitRadS)), start);
         Assert.InRange(worst, 0.5, 1); // the cap was reached, never exceeded
         Assert.True(robot.LargestCappedStepRad > 0.1);
     }
