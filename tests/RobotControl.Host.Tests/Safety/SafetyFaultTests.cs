@@ -45,6 +45,42 @@ public sealed class SafetyFaultTests
     }
 
     [Fact]
+    public void With_the_current_check_relaxed_in_the_robot_file_a_stuck_joint_trips_tracking_error_and_holds()
+    {
+        // The teleop graph on a copy of the robot file whose safety section relaxes the current check and tightens tracking.
+        var dir = Directory.CreateTempSubdirectory("safety-");
+        try
+        {
+            var source = Graphs.Path("teleop-lb.json");
+            var robotPath = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(source)!, "../hardware/robots/lb-1.0.json"));
+            var components = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(robotPath)!, "../components")).Replace('\\', '/');
+            var robot = File.ReadAllText(robotPath).Replace("\"../components/", $"\"{components}/", StringComparison.Ordinal).TrimEnd();
+            robot = robot[..robot.LastIndexOf('}')] + ", \"safety\": { \"tracking_error_rad\": 0.05, \"tracking_error_ms\": 20, \"current_limit_fraction\": 2 } }";
+            File.WriteAllText(Path.Combine(dir.FullName, "lb.json"), robot);
+            var graph = Path.Combine(dir.FullName, "teleop.json");
+            File.WriteAllText(graph, File.ReadAllText(source)
+                .Replace("\"../hardware/robots/lb-1.0.json\"", "\"lb.json\"", StringComparison.Ordinal)
+                .Replace("\"trajectories/", $"\"{Path.GetDirectoryName(source)!.Replace('\\', '/')}/trajectories/", StringComparison.Ordinal));
+
+            var run = SafetyRun.Of("stuck=right.elbow@1s", 1.5, graph);
+            var trip = run.Trip(SafetyCheck.TrackingError);
+            Assert.Equal("right.elbow", trip.Joint);
+            Assert.Equal(0.05, trip.Limit);
+            Assert.InRange(trip.TimeSeconds - FaultAtS, 0.020, 0.400); // 376 ms measured: the error first grows past 0.05 rad at the graph's speed, then persists 20 ms
+            Assert.True(trip.Measured > 0.05);
+            Assert.DoesNotContain(run.Safety.Trips, t => t.Check == SafetyCheck.OverCurrent);
+            Assert.Equal(SafeState.Hold, trip.Action);
+            Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven"));
+            Assert.True(run.GoalsFrozenFrom(trip.TimeSeconds + 0.1), "goals moved after the hold settled");
+            AssertCommon(run, "tracking_error");
+        }
+        finally
+        {
+            dir.Delete(recursive: true);
+        }
+    }
+
+    [Fact]
     public void A_nan_setpoint_trips_at_once_and_the_arms_hold_where_they_are()
     {
         var run = SafetyRun.Of("nan=ik_right@1s", 1.5);

@@ -30,7 +30,7 @@ internal sealed class SafetyRun
 
     public SafetyReport Safety => Report.Safety!;
 
-    public static SafetyRun Of(string inject, double seconds)
+    public static SafetyRun Of(string inject, double seconds, string? graph = null)
     {
         var goal = ControlTable.Firmware["goal_position"];
         GoalFrameSpy? spy = null;
@@ -38,7 +38,7 @@ internal sealed class SafetyRun
         var level = RunLevel.Init;
         var motors = new List<MotorEnd>();
         var report = HeadlessRun.RunVirtual(
-            new RunOptions { GraphPath = Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject) },
+            new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject) },
             HostPlugins.Catalog(),
             new VirtualRunHooks
             {
