@@ -5,7 +5,9 @@ namespace RobotControl.Host.Harness;
 /// <summary>
 /// The host's end of a virtual bus on which modules go silent at given times (<c>--inject silent=</c>): from then on
 /// their replies never reach the host (a broken transmit line), while they still hear the host. The virtual link
-/// hands over whole reply frames, so frames are dropped whole by their ID.
+/// hands over whole reply frames, so frames are dropped whole by their ID. In the combined status packet of a FAST
+/// SYNC/BULK READ a silent module's part never comes, and the modules after it, which wait for it, send nothing
+/// either: the packet is cut where that part would start (the part lengths come from the host's request).
 /// </summary>
 internal sealed class SilentModuleLink : IByteLink
 {
@@ -14,6 +16,7 @@ internal sealed class SilentModuleLink : IByteLink
     private readonly TimeProvider _clock;
     private readonly List<(byte Id, long At)> _silent = [];
     private readonly byte[] _scratch = new byte[4096];
+    private readonly List<(byte Id, int Length)> _fastParts = [];
 
     /// <summary>Wraps <paramref name="inner"/>, whose clock is <paramref name="clock"/>; nobody is silent yet.</summary>
     public SilentModuleLink(IByteLink inner, TimeProvider clock)
@@ -32,7 +35,11 @@ internal sealed class SilentModuleLink : IByteLink
     public int BaudRate => _inner.BaudRate;
 
     /// <inheritdoc />
-    public void Write(ReadOnlySpan<byte> data) => _inner.Write(data);
+    public void Write(ReadOnlySpan<byte> data)
+    {
+        RememberFastRead(data);
+        _inner.Write(data);
+    }
 
     /// <inheritdoc />
     public int Read(Span<byte> buffer, TimeSpan timeout)
@@ -70,7 +77,13 @@ internal sealed class SilentModuleLink : IByteLink
             var length = frame.Length >= HeaderLength && frame[0] == 0xFF && frame[1] == 0xFF && frame[2] == 0xFD
                 ? Math.Min(frame.Length, HeaderLength + frame[5] + (frame[6] << 8))
                 : frame.Length; // not a frame start: pass the rest on as it is
-            if (!(length > 4 && Silenced(frame[4], now)))
+            if (length > 8 && frame[4] == 0xFE && frame[7] == 0x55 && _fastParts.Count > 0)
+            {
+                var cut = FastPacketCut(frame[..length], now);
+                frame[..cut].CopyTo(destination[kept..]);
+                kept += cut;
+            }
+            else if (!(length > 4 && Silenced(frame[4], now)))
             {
                 frame[..length].CopyTo(destination[kept..]);
                 kept += length;
@@ -80,6 +93,53 @@ internal sealed class SilentModuleLink : IByteLink
         }
 
         return kept;
+    }
+
+    // The parts of the combined reply to the last FAST SYNC READ (0x8A: addr, length, IDs) or FAST BULK READ (0x9A: per
+    // module ID, addr, length) the host sent; the few parameter bytes of these requests are taken as written (a stuffed
+    // FF FF FD among them would only make a test's silence start one cycle later).
+    private void RememberFastRead(ReadOnlySpan<byte> frame)
+    {
+        if (frame.Length < 10 || frame[0] != 0xFF || frame[1] != 0xFF || frame[2] != 0xFD || frame[4] != 0xFE)
+        {
+            return;
+        }
+
+        var parameters = frame[8..^2];
+        if (frame[7] == 0x8A && parameters.Length >= 4)
+        {
+            _fastParts.Clear();
+            var length = parameters[2] | (parameters[3] << 8);
+            foreach (var id in parameters[4..])
+            {
+                _fastParts.Add((id, length));
+            }
+        }
+        else if (frame[7] == 0x9A)
+        {
+            _fastParts.Clear();
+            for (var k = 0; k + 5 <= parameters.Length; k += 5)
+            {
+                _fastParts.Add((parameters[k], parameters[k + 3] | (parameters[k + 4] << 8)));
+            }
+        }
+    }
+
+    // Where the combined packet ends on a wire with silent modules: at the start of the first silent module's part.
+    private int FastPacketCut(ReadOnlySpan<byte> packet, long now)
+    {
+        var at = 8; // header 4, ID, LEN 2, instruction 0x55
+        foreach (var (id, length) in _fastParts)
+        {
+            if (at >= packet.Length || Silenced(id, now))
+            {
+                return Math.Min(at, packet.Length);
+            }
+
+            at += 4 + length; // error, ID, data, CRC
+        }
+
+        return packet.Length;
     }
 
     private bool Silenced(byte id, long now)
