@@ -51,7 +51,7 @@ public sealed class RobotSessionTests
     public void A_virtual_session_refuses_to_start_real_threads()
     {
         using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph("teleop-lb.json") }, HostPlugins.Catalog());
-        Assert.Throws<InvalidOperationException>(session.StartRealtime);
+        Assert.Throws<InvalidOperationException>(() => session.StartRealtime());
     }
 
     [Fact]

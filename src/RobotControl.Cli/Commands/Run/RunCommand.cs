@@ -25,6 +25,10 @@ internal sealed class RunCommand : ICliCommand
         var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: ber=<bit error rate>, reset=<arm.location|id>@<time> (comma-separated)" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (one load context each)" };
         var seed = new Option<int>("--seed") { Description = "Seed of the virtual robot's noise and wire faults", DefaultValueFactory = _ => 1 };
+        var transport = new Option<string?>("--transport") { Description = "Open this transport instead of the graph's, e.g. serial:/dev/pts/3?baud=1000000 (virtual[:...] is --virtual)" };
+        var rtPriority = new Option<int>("--rt-priority") { Description = "Real time: run the bus and loop threads with SCHED_FIFO at this priority (1..99; 0: normal scheduling)", DefaultValueFactory = _ => 0 };
+        var cpu = new Option<int?>("--cpu") { Description = "Real time: pin the bus and loop threads to this CPU" };
+        var continueOnFault = new Option<bool>("--continue-on-fault") { Description = "Keep commanding when the robot faults (default: stop, motors off, exit 1)" };
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
         command.Arguments.Add(graph);
         command.Options.Add(isVirtual);
@@ -33,6 +37,10 @@ internal sealed class RunCommand : ICliCommand
         command.Options.Add(inject);
         command.Options.Add(plugins);
         command.Options.Add(seed);
+        command.Options.Add(transport);
+        command.Options.Add(continueOnFault);
+        command.Options.Add(rtPriority);
+        command.Options.Add(cpu);
         command.SetAction(parse => Run(
             parse.GetValue(graph)!.FullName,
             parse.GetValue(isVirtual),
@@ -41,6 +49,7 @@ internal sealed class RunCommand : ICliCommand
             parse.GetValue(inject),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
+            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -50,11 +59,12 @@ internal sealed class RunCommand : ICliCommand
     internal static PluginCatalog Catalog(string? pluginsFolder) => HostPlugins.Catalog(pluginsFolder);
 
     /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
-    internal static int Run(string graphPath, bool isVirtual, string durationText, string? reportPath, string? injectText, string? pluginsFolder, int seed, TextWriter output, TextWriter error)
+    internal static int Run(string graphPath, bool isVirtual, string durationText, string? reportPath, string? injectText, string? pluginsFolder, int seed, RunExtras extras, TextWriter output, TextWriter error)
     {
         RunOptions options;
         try
         {
+            isVirtual = extras.ResolveVirtual(isVirtual);
             options = new RunOptions
             {
                 GraphPath = graphPath,
@@ -62,6 +72,9 @@ internal sealed class RunCommand : ICliCommand
                 Duration = RunDuration.Parse(durationText),
                 Inject = FaultInjection.Parse(injectText),
                 Seed = seed,
+                Transport = isVirtual ? null : extras.Transport,
+                ContinueOnFault = extras.ContinueOnFault,
+                Threads = extras.Threads(),
             };
         }
         catch (FormatException ex)
@@ -79,6 +92,8 @@ internal sealed class RunCommand : ICliCommand
         var c = CultureInfo.InvariantCulture;
         output.WriteLine(string.Create(c, $"run {Path.GetFileName(graphPath)}: {(isVirtual ? "virtual robot (firmware in the loop), virtual clock" : "real time")}, {options.Duration.TotalSeconds:0.###} s, faults: {options.Inject}"));
         RunReport result;
+        using var signals = new StopSignals(error);
+        options = options with { Stop = signals.Token };
         try
         {
             var interactive = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected && AnsiConsole.Profile.Capabilities.Interactive;
@@ -96,13 +111,14 @@ internal sealed class RunCommand : ICliCommand
         }
 
         Summarise(result, output);
+        RunEnd.Tell(result, output, error);
         if (reportPath is not null)
         {
             File.WriteAllText(reportPath, result.ToJson());
             output.WriteLine($"report: {reportPath}");
         }
 
-        return result.DeadlineMisses == 0 && result.Faults.Count == 0 ? 0 : 1;
+        return RunEnd.ExitCode(result);
     }
 
     private static RunReport RunWithLines(RunOptions options, PluginCatalog catalog, TextWriter output)
