@@ -23,8 +23,8 @@ public sealed record ParameterValue(ControlTableField Field, int Motor, long Val
 /// </summary>
 public static class ModuleParameters
 {
-    /// <summary>Baud codes of the control table's <c>baud_rate</c> field.</summary>
-    private static readonly int[] BaudCodes = [9600, 57600, 115200, 1_000_000, 2_000_000, 3_000_000, 4_000_000, 4_500_000];
+    /// <summary>Bit rate of each code of the control table's <c>baud_rate</c> field (its <c>codes</c>), indexed by code.</summary>
+    private static readonly int[] BaudCodes = ReadBaudCodes();
 
     /// <summary>The baud code for <paramref name="baud"/>, or -1.</summary>
     public static int BaudCode(int baud) => Array.IndexOf(BaudCodes, baud);
@@ -80,6 +80,18 @@ public static class ModuleParameters
         }
 
         return values;
+    }
+
+    private static int[] ReadBaudCodes()
+    {
+        var codes = ControlTable.Firmware.Codes("baud_rate");
+        var rates = new int[codes.Count == 0 ? 0 : codes.Keys.Max() + 1];
+        foreach (var (code, rate) in codes)
+        {
+            rates[code] = int.Parse(rate, System.Globalization.CultureInfo.InvariantCulture);
+        }
+
+        return rates;
     }
 
     private static long Clamp(double value, ControlTableField field) => (long)Math.Clamp(Math.Round(value), field.Min, field.Max);

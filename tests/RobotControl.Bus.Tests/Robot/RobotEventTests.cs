@@ -46,6 +46,8 @@ public sealed class RobotEventTests
         Assert.All(table.Bits("motor_error"), b => Assert.Equal(status[b.Key], b.Value)); // motor_error shares the module's bits
         Assert.Equal("brown-out", table.Codes("reset_cause")[2]);
         Assert.Empty(table.Codes("kp"));
+        Assert.Equal(1_000_000, ModuleParameters.BaudFromCode((int)table["baud_rate"].Default));
+        Assert.All(table.Codes("baud_rate"), c => Assert.Equal(c.Key, ModuleParameters.BaudCode(int.Parse(c.Value, System.Globalization.CultureInfo.InvariantCulture))));
         Assert.Equal("none", HardwareErrors.None.ToString());
         Assert.Equal("over_current, position_lost", (HardwareErrors.OverCurrent | HardwareErrors.PositionLost).ToString());
         Assert.Throws<KeyNotFoundException>(() => table.Bit("hardware_error_status", "no_such_bit"));
