@@ -13,6 +13,11 @@ public static class LatencyTimer
     public static string? File(string device, string sysRoot = "/sys")
     {
         ArgumentNullException.ThrowIfNull(device);
+        if (!System.IO.File.Exists(device))
+        {
+            return null; // opening it will say so
+        }
+
         var name = Path.GetFileName(new FileInfo(device).ResolveLinkTarget(returnFinalTarget: true)?.FullName ?? device);
         var path = Path.Combine(sysRoot, "class", "tty", name, "device", "latency_timer");
         return System.IO.File.Exists(path) ? path : null;
