@@ -245,6 +245,20 @@ public sealed partial class HeadlessSession
         return CommandResult.Ok("faults cleared");
     });
 
+    /// <summary>The virtual robot's own output angle of <paramref name="motor"/> in degrees (tests: the simulation's truth), read on the session thread.</summary>
+    internal async Task<double> VirtualOutputDeg(string motor)
+    {
+        var m = FindMotor(motor) ?? throw new KeyNotFoundException(motor);
+        var sim = _sim ?? throw new InvalidOperationException("not a virtual session");
+        double value = double.NaN;
+        await _commands.Submit(() =>
+        {
+            value = sim.Axis(m.Config.Arm, m.Config.Actuator.Name).OutputAngleRad * 180 / Math.PI;
+            return CommandResult.Ok("read");
+        }).ConfigureAwait(false);
+        return value;
+    }
+
     private static Task<CommandResult> Bad(string message) => Task.FromResult(CommandResult.Fail(CommandOutcome.BadInput, message));
 
     private Task<CommandResult> NotFound(int id) =>

@@ -56,8 +56,8 @@ public sealed class ConsoleServer : IAsyncDisposable
         var app = builder.Build();
         var server = new ConsoleServer(app, token) { Operator = new OperatorRole(time ?? TimeProvider.System) };
         var access = new AccessControl(token);
-        app.Use(access.Invoke);
         app.UseWebSockets(new WebSocketOptions { KeepAliveInterval = TimeSpan.FromSeconds(15) });
+        app.Use(access.Invoke);
         ApiEndpoints.Map(app, session, server.Operator);
         StreamEndpoint.Map(app, session);
         var assets = new StaticAssets();

@@ -32,8 +32,11 @@ export function plotsPage(root: HTMLElement): () => void {
     times.push(...frame.t);
     frame.v.forEach((v, i) => series[i]?.push(...v));
     trim();
-    if (!pause.checked) draw();
+    dirty = true;
   });
+  // Redraw at most 20 times a second, whatever the stream's frame rate.
+  let dirty = false;
+  const redraw = setInterval(() => { if (dirty && !pause.checked) { dirty = false; draw(); } }, 50);
 
   function trim(): void {
     const span = Number(windowSelect.value);
@@ -95,5 +98,5 @@ export function plotsPage(root: HTMLElement): () => void {
     const first = Array.from(picker.options).find((o) => o.value.endsWith('.position'));
     if (first) { first.selected = true; rebuild(); }
   });
-  return () => { stream.close(); plot?.destroy(); };
+  return () => { clearInterval(redraw); stream.close(); plot?.destroy(); };
 }
