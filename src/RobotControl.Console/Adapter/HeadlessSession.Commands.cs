@@ -21,8 +21,8 @@ public sealed partial class HeadlessSession
     /// <inheritdoc />
     public Task<CommandResult> DiscoverAsync() => _commands.Submit(() =>
     {
-        RunDiscovery();
-        return CommandResult.Ok($"{_found} of {_bus.Controllers.Count} modules found", [.. _events.After(0).Where(e => e.Source == "discovery").TakeLast(_bus.Controllers.Count + 4).Select(e => e.Message)]);
+        var lines = RunDiscovery();
+        return CommandResult.Ok($"{_found} of {_bus.Controllers.Count} modules found", lines);
     });
 
     /// <inheritdoc />

@@ -267,13 +267,15 @@ public sealed partial class HeadlessSession : IConsoleSession
         }
     }
 
-    private void RunDiscovery()
+    /// <summary>Discovers the modules, logs and returns what was found, and reads the present ones' parameters.</summary>
+    private List<string> RunDiscovery()
     {
         var report = _bus.Discover();
         _found = report.Present.Count;
-        foreach (var line in report.Lines())
+        var lines = report.Lines().Select(l => l.Trim()).ToList();
+        foreach (var line in lines)
         {
-            _events.Add(Now, "discovery", line.Trim());
+            _events.Add(Now, "discovery", line);
         }
 
         foreach (var c in _bus.Controllers.Where(c => c.Present))
@@ -285,6 +287,8 @@ public sealed partial class HeadlessSession : IConsoleSession
         {
             // Discovery's findings are logged above, from the report.
         }
+
+        return lines;
     }
 
     private void ReadParameters(RobotController c)

@@ -21,7 +21,7 @@ export function view3dPage(root: HTMLElement): () => void {
   grid.position.y = -0.12;
   scene.add(grid);
   const camera = new THREE.PerspectiveCamera(45, 960 / 600, 0.001, 10);
-  camera.position.set(0.25, 0.18, 0.32);
+  camera.position.set(0.15, 0.11, 0.19);
   const controls = new OrbitControls(camera, canvas);
   controls.target.set(0, 0, 0.02);
   controls.update();
