@@ -224,10 +224,10 @@ static void current_spike_is_filtered_sustained_overcurrent_trips(void)
 {
     rcfw_bus *bus = one_module();
     CHECK_EQ(peek8(bus, 0, RCFW_CT_CURRENT_FILTER_SHIFT), 4);
-    wr16(bus, 1, RCFW_CT_CURRENT_LIMIT, 1000);
+    wr16(bus, 1, RCFW_CT_CURRENT_LIMIT, 1000); /* persistent parameters: written while torque is off */
+    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
     wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 1);
     wr32(bus, 1, RCFW_CT_GOAL_POSITION, 100000);
-    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
     rcfw_set_current_raw(bus, 0, 0, 500);
     rcfw_advance_us(bus, 30000); /* 300 periods: the average settles at 500 */
     CHECK_EQ(rcfw_get_pwm(bus, 0, 0), 255);

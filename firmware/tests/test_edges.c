@@ -136,22 +136,24 @@ static void truncated_frame_is_abandoned_after_silence(void)
     rcfw_bus_destroy(bus);
 }
 
-static void goal_is_clamped_to_the_position_limits(void)
+static void stored_goal_is_clamped_to_narrowed_position_limits(void)
 {
-    /* position_min -100, position_max 100 counts: goals of -100000 and +100000 become -100 and 100. */
+    /* A goal stored while the limits were wide is clamped when they narrow: with position_min -100 and position_max
+     * 100 counts, a stored goal of -100000 drives to -100 and one of +100000 to 100. (A new goal beyond the limits is
+     * refused with a data limit error; test_exchanges covers that.) */
     const uint8_t ids[1] = {1}, motors[1] = {1};
-    rcfw_bus *bus = rcfw_bus_create(1, ids, motors);
-    wr32(bus, 1, RCFW_CT_POSITION_MIN, (uint32_t)-100);
-    wr32(bus, 1, RCFW_CT_POSITION_MAX, 100);
-    wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
-    wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 1);
-    wr32(bus, 1, RCFW_CT_GOAL_POSITION, (uint32_t)-100000);
-    rcfw_advance_us(bus, 1000);
-    CHECK_EQ((int32_t)peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT), -100);
-    wr32(bus, 1, RCFW_CT_GOAL_POSITION, 100000);
-    rcfw_advance_us(bus, 1000);
-    CHECK_EQ((int32_t)peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT), 100);
-    rcfw_bus_destroy(bus);
+    const int32_t goals[2] = {-100000, 100000}, expected[2] = {-100, 100};
+    for (int k = 0; k < 2; k++) {
+        rcfw_bus *bus = rcfw_bus_create(1, ids, motors);
+        wr16(bus, 1, RCFW_CT_SPEED_LIMIT, 0);
+        wr32(bus, 1, RCFW_CT_GOAL_POSITION, (uint32_t)goals[k]);
+        wr32(bus, 1, RCFW_CT_POSITION_MIN, (uint32_t)-100);
+        wr32(bus, 1, RCFW_CT_POSITION_MAX, 100);
+        wr8(bus, 1, RCFW_CT_TORQUE_ENABLE, 1);
+        rcfw_advance_us(bus, 1000);
+        CHECK_EQ((int32_t)peek32(bus, 0, RCFW_CT_PRESENT_SETPOINT), expected[k]);
+        rcfw_bus_destroy(bus);
+    }
 }
 
 static void latched_watchdog_keeps_torque_off_whatever_writes_it(void)
@@ -180,7 +182,7 @@ int main(void)
     TF_RUN(watchdog_trips_at_its_period);
     TF_RUN(fram_sequence_wraps);
     TF_RUN(truncated_frame_is_abandoned_after_silence);
-    TF_RUN(goal_is_clamped_to_the_position_limits);
+    TF_RUN(stored_goal_is_clamped_to_narrowed_position_limits);
     TF_RUN(latched_watchdog_keeps_torque_off_whatever_writes_it);
     TF_END();
 }

@@ -39,6 +39,12 @@ public sealed class VirtualAxis
         set => Model.ObstacleTorque = Math.Abs(value);
     }
 
+    /// <summary>
+    /// Added to the current the module's sensor reads, A (a current spike or a failing sense resistor): the firmware
+    /// and the host see it, the drivetrain does not. 0: none.
+    /// </summary>
+    public double CurrentSenseOffsetA { get; set; }
+
     internal int ModuleIndex { get; }
 
     internal DrivetrainModel Model { get; }

@@ -57,7 +57,7 @@ public sealed class ParameterRulesTests
 
         Assert.Contains("watchdog error is latched", latched, StringComparison.Ordinal);
         Assert.DoesNotContain("watchdog error", other, StringComparison.Ordinal);
-        Assert.Contains("OverCurrent", other, StringComparison.Ordinal);
+        Assert.Contains("over_current", other, StringComparison.Ordinal);
         Assert.Contains("without a latched error", none, StringComparison.Ordinal);
         Assert.Contains("does not answer", silent, StringComparison.Ordinal);
     }

@@ -140,6 +140,7 @@ public static class RobotLoader
         analysis?.RejectUnknownFields();
         var requirements = ReadRequirements(r.Object("requirements"), sink);
         var modules = ModuleSectionReader.Read(r, actuators, arms);
+        _ = r.Raw("safety", required: false); // the safety supervisor's thresholds: read by the session layer (RobotControl.Host.Safety.SafetySection)
         r.RejectUnknownFields();
 
         RobotDataException.ThrowIfAny(sink);

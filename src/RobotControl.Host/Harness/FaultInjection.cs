@@ -3,18 +3,29 @@ using System.Globalization;
 namespace RobotControl.Host.Harness;
 
 /// <summary>
-/// Faults to inject into the virtual robot, parsed from <c>ber=1e-5,reset=right.shoulder@5s,reset=left.forearm@8.5s</c>:
-/// a bit-error rate on the wire and module resets (module named <c>arm.location</c> or by bus ID, at a run time).
+/// Faults to inject into the virtual robot, parsed from <c>ber=1e-5,reset=right.shoulder@5s,stuck=right.elbow@5s</c>:
+/// a bit-error rate on the wire, module resets (module named <c>arm.location</c> or by bus ID, at a run time), and
+/// the safety faults (<see cref="TimedFaultKind"/>): <c>stall=100ms@5s</c> (the host stops for that long),
+/// <c>stuck=right.elbow@5s</c> (locked rotor), <c>current=right.elbow@5s</c> (current spike at the sensor),
+/// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint), <c>silent=right.forearm@5s</c> (the module's
+/// replies stop).
 /// </summary>
 /// <param name="BitErrorRate">Probability that a bit on the wire flips.</param>
 /// <param name="Resets">Module resets: which module and when (run time).</param>
-public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleReset> Resets)
+/// <param name="Timed">Safety faults at run times.</param>
+public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleReset> Resets, IReadOnlyList<TimedFault>? Timed = null)
 {
     /// <summary>No faults.</summary>
     public static FaultInjection None { get; } = new(0, []);
 
+    /// <summary>The syntax, for <c>--help</c> and messages.</summary>
+    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, nan=<plug-in>@<time>";
+
+    /// <summary>The safety faults (empty when none).</summary>
+    public IReadOnlyList<TimedFault> TimedFaults => Timed ?? [];
+
     /// <summary>True when nothing is injected.</summary>
-    public bool IsNone => BitErrorRate == 0 && Resets.Count == 0;
+    public bool IsNone => BitErrorRate == 0 && Resets.Count == 0 && TimedFaults.Count == 0;
 
     /// <summary>Parses the <c>--inject</c> text.</summary>
     /// <exception cref="FormatException">The text is malformed (the message names the part).</exception>
@@ -27,6 +38,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
 
         var ber = 0.0;
         var resets = new List<ModuleReset>();
+        var timed = new List<TimedFault>();
         foreach (var part in text.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
         {
             var eq = part.IndexOf('=', StringComparison.Ordinal);
@@ -50,18 +62,79 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
 
                     resets.Add(new ModuleReset(value[..at], RunDuration.Parse(value[(at + 1)..])));
                     break;
+                case "silent":
+                case "stall":
+                case "stuck":
+                case "current":
+                case "nan":
+                    timed.Add(ParseTimed(part, key, value));
+                    break;
                 default:
-                    throw new FormatException($"--inject '{part}': unknown fault (ber=<rate>, reset=<module>@<time>)");
+                    throw new FormatException($"--inject '{part}': unknown fault (known: {Syntax})");
             }
         }
 
-        return new FaultInjection(ber, resets);
+        return new FaultInjection(ber, resets, timed);
     }
 
     /// <inheritdoc />
     public override string ToString() =>
         IsNone ? "none" : string.Join(",", (BitErrorRate > 0 ? [string.Create(CultureInfo.InvariantCulture, $"ber={BitErrorRate:G3}")] : Array.Empty<string>())
-            .Concat(Resets.Select(r => string.Create(CultureInfo.InvariantCulture, $"reset={r.Module}@{r.At.TotalSeconds:0.###}s"))));
+            .Concat(Resets.Select(r => string.Create(CultureInfo.InvariantCulture, $"reset={r.Module}@{r.At.TotalSeconds:0.###}s")))
+            .Concat(TimedFaults.Select(f => f.ToString())));
+
+    private static TimedFault ParseTimed(string part, string key, string value)
+    {
+        var at = value.LastIndexOf('@');
+        if (at <= 0)
+        {
+            throw new FormatException($"--inject '{part}': expected {key}=<{key switch { "stall" => "duration", "nan" => "plug-in", "silent" => "arm.location or id", _ => "arm.motor" }}>@<time>, e.g. {key}={key switch { "stall" => "100ms", "nan" => "ik_right", "silent" => "right.forearm", _ => "right.elbow" }}@5s");
+        }
+
+        var kind = key switch { "silent" => TimedFaultKind.Silent, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, _ => TimedFaultKind.Nan };
+        var target = value[..at];
+        var stall = kind == TimedFaultKind.Stall ? RunDuration.Parse(target) : TimeSpan.Zero;
+        if (kind == TimedFaultKind.Stall && stall <= TimeSpan.Zero)
+        {
+            throw new FormatException($"--inject '{part}': the stall must last longer than 0, e.g. stall=100ms@5s");
+        }
+
+        return new TimedFault(kind, kind == TimedFaultKind.Stall ? string.Empty : target, stall, RunDuration.Parse(value[(at + 1)..]));
+    }
+}
+
+/// <summary>The safety faults <c>--inject</c> knows.</summary>
+public enum TimedFaultKind
+{
+    /// <summary>A module's replies stop reaching the host (it still hears the host).</summary>
+    Silent,
+
+    /// <summary>The host stops (no bus traffic, no ticks) for a duration.</summary>
+    Stall,
+
+    /// <summary>A motor's rotor locks (a jammed joint).</summary>
+    Stuck,
+
+    /// <summary>A motor's current sensor reads twice its limit more (a spike).</summary>
+    Current,
+
+    /// <summary>A plug-in's arm gets NaN joint setpoints.</summary>
+    Nan,
+}
+
+/// <summary>One safety fault.</summary>
+/// <param name="Kind">What.</param>
+/// <param name="Target">Motor (<c>arm.motor</c>) or plug-in instance; empty for a stall.</param>
+/// <param name="Duration">How long a stall lasts.</param>
+/// <param name="At">When, in run time.</param>
+public sealed record TimedFault(TimedFaultKind Kind, string Target, TimeSpan Duration, TimeSpan At)
+{
+    /// <inheritdoc />
+    public override string ToString() => Kind switch
+    {
+        TimedFaultKind.Stall => string.Create(CultureInfo.InvariantCulture, $"stall={Duration.TotalMilliseconds:0.###}ms@{At.TotalSeconds:0.###}s"),
+        _ => string.Create(CultureInfo.InvariantCulture, $"{Kind.ToString().ToLowerInvariant()}={Target}@{At.TotalSeconds:0.###}s"),
+    };
 }
 
 /// <summary>One injected module reset.</summary>

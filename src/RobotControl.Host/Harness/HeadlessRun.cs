@@ -1,5 +1,7 @@
 using System.Globalization;
+using RobotControl.Bus.Transports;
 using RobotControl.Hardware.Model;
+using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
@@ -39,8 +41,9 @@ public static class HeadlessRun
     private static RunReport RunVirtual(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
     {
         TrackingMeter? meter = null;
+        SilentModuleLink? silentLink = null;
         using var session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
+            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = SilenceModules(options, hooks?.WrapLink, l => silentLink = l), Observer = (node, port) => Meter(node, port, out meter) },
             catalog);
         var bus = session.Robot;
         var sim = session.Simulation!;
@@ -58,6 +61,14 @@ public static class HeadlessRun
             sim.WireFaults = new WireFaults { BitErrorRate = options.Inject.BitErrorRate };
         }
 
+        foreach (var f in options.Inject.TimedFaults.Where(f => f.Kind == TimedFaultKind.Silent))
+        {
+            silentLink!.Silence(ResolveModule(session.Graph.Robot!, f.Target), begin + (long)(f.At.TotalSeconds * clock.TimestampFrequency));
+        }
+
+        var safetyFaults = new SafetyFaultSchedule(options.Inject.TimedFaults, sim, bus, session.Graph, begin, clock.TimestampFrequency);
+        var around = hooks?.AroundTick;
+        PressPedal(session.Supervisor, begin);
         var loop = session.Loop;
         var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
@@ -74,9 +85,46 @@ public static class HeadlessRun
                     progress?.Invoke(Progress(loop, meter!, elapsed, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
                 }
             },
-            hooks?.AroundTick);
+            safetyFaults.Remaining == 0 ? around : (l, at) =>
+            {
+                safetyFaults.BeforeTick(at);
+                if (around is null)
+                {
+                    l.Step();
+                }
+                else
+                {
+                    around(l, at);
+                }
+
+                safetyFaults.AfterTick(at);
+            });
+        hooks?.AfterRun?.Invoke(session);
         DrainEvents(bus, clock.GetElapsedTime(begin), faults);
-        return Report(loop, meter!, clock.GetElapsedTime(begin), session.Graph, bus, faults);
+        return Report(loop, meter!, clock.GetElapsedTime(begin), session, faults);
+    }
+
+    /// <summary>The link wrapper for <c>silent=</c> faults (outermost: a measuring wrapper sees what the host sees), or <paramref name="wrap"/> alone without one.</summary>
+    private static Func<IByteLink, TimeProvider, IByteLink>? SilenceModules(RunOptions options, Func<IByteLink, TimeProvider, IByteLink>? wrap, Action<SilentModuleLink> made)
+    {
+        if (!options.Inject.TimedFaults.Any(f => f.Kind == TimedFaultKind.Silent))
+        {
+            return wrap;
+        }
+
+        return (link, clock) =>
+        {
+            var silent = new SilentModuleLink(wrap?.Invoke(link, clock) ?? link, clock);
+            made(silent);
+            return silent;
+        };
+    }
+
+    /// <summary>The shipped graphs have no pedal plug-in: the harness is the operator and holds the pedal down for the run.</summary>
+    private static void PressPedal(SafetySupervisor supervisor, long begin)
+    {
+        supervisor.SetOrigin(begin);
+        supervisor.PedalDown("harness");
     }
 
     private static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress)
@@ -96,6 +144,7 @@ public static class HeadlessRun
         var faults = new List<FaultEntry>();
         DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
         var begin = clock.GetTimestamp();
+        PressPedal(session.Supervisor, begin);
         session.StartRealtime();
         try
         {
@@ -117,7 +166,7 @@ public static class HeadlessRun
         }
 
         DrainEvents(bus, clock.GetElapsedTime(begin), faults);
-        return Report(loop, meter!, clock.GetElapsedTime(begin), session.Graph, bus, faults);
+        return Report(loop, meter!, clock.GetElapsedTime(begin), session, faults);
     }
 
     private static TrackingMeter Meter(RobotNode node, IRobotPort port, out TrackingMeter meter) => meter = new TrackingMeter(node, port);
@@ -125,8 +174,10 @@ public static class HeadlessRun
     private static RunProgress Progress(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, TimeSpan duration, int faults, string robotFaults) =>
         new(elapsed, duration, loop.TickCount, loop.Statistics.DeadlineMisses, meter.RmsMm, meter.LastErrorMm.Max(), faults, robotFaults);
 
-    private static RunReport Report(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, LoadedGraph loaded, BusRobot bus, List<FaultEntry> faults)
+    private static RunReport Report(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, List<FaultEntry> faults)
     {
+        var loaded = session.Graph;
+        var bus = session.Robot;
         var all = faults
             .Concat(loaded.Program.Faults.Select(f => new FaultEntry(f.Time.TotalSeconds, f.Instance, f.Message)))
             .OrderBy(f => f.TimeSeconds)
@@ -157,7 +208,8 @@ public static class HeadlessRun
             meter.RmsMm,
             meter.MaxMm,
             new BusReport(frames, crc, timeouts, retries),
-            all);
+            all,
+            SafetyReport.Of(session.Supervisor));
     }
 
     private static void DrainEvents(BusRobot bus, TimeSpan at, List<FaultEntry> faults)

@@ -1,12 +1,14 @@
 using System.Text;
 using System.Text.Json;
+using RobotControl.Host.Safety;
 
 namespace RobotControl.Host.Harness;
 
 /// <summary>
 /// The outcome of a headless run, written as <c>report.json</c>:
 /// <c>{"duration_s", "ticks", "deadline_misses", "tick_us": {"median", "p99", "max"}, "tracking_error_mm": {"rms",
-/// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries"}, "faults": [...]}</c>.
+/// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries"}, "faults": [...], "safety": {...}}</c>
+/// (<see cref="SafetyReport"/>).
 /// </summary>
 /// <param name="DurationSeconds">Loop time covered, seconds.</param>
 /// <param name="Ticks">Ticks run.</param>
@@ -18,6 +20,7 @@ namespace RobotControl.Host.Harness;
 /// <param name="TrackingMaxMm">Largest tracking error, mm.</param>
 /// <param name="Bus">Bus statistics.</param>
 /// <param name="Faults">Everything that went wrong, in time order.</param>
+/// <param name="Safety">The safety supervisor's run levels and trips (null: the run had none).</param>
 public sealed record RunReport(
     double DurationSeconds,
     long Ticks,
@@ -28,7 +31,8 @@ public sealed record RunReport(
     double TrackingRmsMm,
     double TrackingMaxMm,
     BusReport Bus,
-    IReadOnlyList<FaultEntry> Faults)
+    IReadOnlyList<FaultEntry> Faults,
+    SafetyReport? Safety = null)
 {
     /// <summary>The report as JSON in the documented schema.</summary>
     public string ToJson()
@@ -66,6 +70,7 @@ public sealed record RunReport(
             }
 
             w.WriteEndArray();
+            Safety?.Write(w);
             w.WriteEndObject();
         }
 

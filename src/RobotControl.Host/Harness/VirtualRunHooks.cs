@@ -1,4 +1,5 @@
 using RobotControl.Bus.Transports;
+using RobotControl.Host.Session;
 using RobotControl.Runtime.Loop;
 
 namespace RobotControl.Host.Harness;
@@ -11,4 +12,7 @@ internal sealed record VirtualRunHooks
 
     /// <summary>Runs each tick (must call <see cref="ControlLoop.Step"/> exactly once); gets the loop and the tick's timestamp on the bus clock's timeline.</summary>
     public Action<ControlLoop, long>? AroundTick { get; init; }
+
+    /// <summary>Runs once after the last tick, before the session closes (tests read the virtual modules back).</summary>
+    public Action<RobotSession>? AfterRun { get; init; }
 }

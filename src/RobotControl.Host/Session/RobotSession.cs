@@ -1,4 +1,5 @@
 using RobotControl.Bus.Transports;
+using RobotControl.Host.Safety;
 using RobotControl.Robot.Bus;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.GraphFiles;
@@ -21,8 +22,9 @@ public sealed class RobotSession : IDisposable
     private readonly ManualTimeProvider? _loopClock;
     private bool _running;
 
-    private RobotSession(LoadedGraph graph, RobotConnection connection, ManualTimeProvider? loopClock, DiscoveryReport discovery, ControlLoop loop)
+    private RobotSession(LoadedGraph graph, RobotConnection connection, ManualTimeProvider? loopClock, DiscoveryReport discovery, ControlLoop loop, SafetySupervisor supervisor)
     {
+        Supervisor = supervisor;
         Graph = graph;
         Connection = connection;
         _loopClock = loopClock;
@@ -38,6 +40,9 @@ public sealed class RobotSession : IDisposable
 
     /// <summary>The robot layer.</summary>
     public BusRobot Robot => Connection.Robot!;
+
+    /// <summary>The safety supervisor: run level, per-cycle checks, trips.</summary>
+    public SafetySupervisor Supervisor { get; }
 
     /// <summary>The robot node of the graph (attached to <see cref="Robot"/>).</summary>
     public RobotNode Node => Graph.RobotNode!;
@@ -57,7 +62,11 @@ public sealed class RobotSession : IDisposable
     /// <summary>True for a virtual session.</summary>
     public bool IsVirtual => Simulation is not null;
 
-    /// <summary>Brings a session up: loads the graph, opens its robot, discovers the modules, turns the motors on, attaches the graph and builds the loop.</summary>
+    /// <summary>
+    /// Brings a session up: loads the graph, opens its robot, discovers the modules, puts a safety supervisor on it
+    /// (run level INIT), homes it (HOMING) and turns the motors on holding position (PEDAL_UP), attaches the graph and
+    /// builds the loop. Teleoperation drives the arms only after <see cref="SafetySupervisor.PedalDown"/>.
+    /// </summary>
     /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
     /// <exception cref="InvalidOperationException">The graph names no robot, or a real session names a virtual transport.</exception>
     /// <exception cref="IOException">The transport cannot be opened or a module refuses.</exception>
@@ -88,11 +97,12 @@ public sealed class RobotSession : IDisposable
         {
             var bus = connection.Robot!;
             var discovery = bus.Discover();
-            bus.EnableTorque(true);
+            var supervisor = new SafetySupervisor(bus, SafetySection.Load(robot.SourceFile), TimeSpan.FromSeconds(1.0 / loaded.Document.LoopRateHz));
+            supervisor.Home("session");
             loaded.RobotNode!.Attach(bus);
             var observer = options.Observer?.Invoke(loaded.RobotNode!, bus);
             var loop = new ControlLoop(loaded.Program, loopClock ?? TimeProvider.System, loaded.Document.LoopRateHz, observer);
-            return new RobotSession(loaded, connection, loopClock, discovery, loop);
+            return new RobotSession(loaded, connection, loopClock, discovery, loop, supervisor);
         }
         catch
         {

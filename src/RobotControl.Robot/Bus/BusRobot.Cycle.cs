@@ -86,6 +86,7 @@ public sealed partial class BusRobot
         }
 
         ComputeGoals(dt);
+        CapAndHoldGoals(dt);
         var ids = _ids;
         if (ids.Length == 0)
         {
@@ -144,6 +145,8 @@ public sealed partial class BusRobot
         {
             Reprobe();
         }
+
+        AfterUpdate?.Invoke();
     }
 
     private void Loop()

@@ -205,9 +205,17 @@ public sealed partial class BusRobot
             }
         }
 
+        IOException? refused = null;
         foreach (var c in _active)
         {
-            Arm(c, on);
+            try
+            {
+                Arm(c, on);
+            }
+            catch (IOException ex) when (!on)
+            {
+                refused ??= ex; // off: every other module is still told
+            }
         }
 
         if (on)
@@ -217,6 +225,11 @@ public sealed partial class BusRobot
         else if (_state.Current != RobotState.Disabled)
         {
             _state.MoveTo(MotorsOffState, "motors off");
+        }
+
+        if (refused is not null)
+        {
+            throw refused; // after the move: the others are off, and the robot knows it
         }
     }
 

@@ -48,6 +48,9 @@ public sealed class RobotController
 
     internal int ConsecutiveMisses { get; set; }
 
+    /// <summary>Bus cycles in a row in which the module's feedback reply was missing or bad (0: it answered last cycle).</summary>
+    public int MissedReplies => ConsecutiveMisses;
+
 #pragma warning disable SA1401, CA1051 // written by the bus thread with Volatile
     internal bool PresentFlag;
 #pragma warning restore SA1401, CA1051

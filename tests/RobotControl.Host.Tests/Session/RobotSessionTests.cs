@@ -6,23 +6,9 @@ namespace RobotControl.Host.Tests.Session;
 
 public sealed class RobotSessionTests
 {
-    private static string Graph(string name)
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            var path = Path.Combine(dir.FullName, "graphs", name);
-            if (File.Exists(path))
-            {
-                return path;
-            }
-        }
-
-        throw new FileNotFoundException($"graphs/{name} not found above {AppContext.BaseDirectory}");
-    }
-
     private static double[] RunVirtual(long ticks)
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph("teleop-lb.json") }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
         Assert.True(session.IsVirtual);
         Assert.Equal(RobotState.Enabled, session.Robot.State);
         Assert.True(session.Discovery.AllAsConfigured);
@@ -50,7 +36,7 @@ public sealed class RobotSessionTests
     [Fact]
     public void A_virtual_session_refuses_to_start_real_threads()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph("teleop-lb.json") }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
         Assert.Throws<InvalidOperationException>(session.StartRealtime);
     }
 

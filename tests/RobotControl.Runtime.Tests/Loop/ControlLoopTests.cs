@@ -78,6 +78,6 @@ public sealed class ControlLoopTests
         // fixed time.
         Assert.Null(loop.ThreadFailure);
         Assert.True(loop.TickCount >= 100, $"only {loop.TickCount} ticks in {periods:F0} ms");
-        Assert.True(loop.TickCount + loop.Statistics.DeadlineMisses <= periods + 1, $"{loop.TickCount} ticks + {loop.Statistics.DeadlineMisses} misses in {periods:F0} periods: ahead of the clock");
+        Assert.True(loop.TickCount <= periods + 1, $"{loop.TickCount} ticks in {periods:F0} periods: ahead of the clock");
     }
 }

@@ -85,10 +85,10 @@ internal static class ParameterGuard
     {
         var (start, end) = table.PersistentArea;
         var block = new byte[end - start];
-        var reply = client.Read(id, (ushort)start, block);
+        var reply = client.ReadMapped(id, table, start, block);
         return reply.Succeeded
             ? block
-            : throw new IOException(string.Create(CultureInfo.InvariantCulture, $"module {id}: reading its parameters failed ({reply.Outcome}, error 0x{reply.Error:X2}); nothing was written"));
+            : throw new IOException(string.Create(CultureInfo.InvariantCulture, $"module {id}: reading its parameters failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)}); nothing was written"));
     }
 
     private static Func<string, int, long> Values(ControlTable table, byte[] block, Dictionary<(string, int), long> changes) =>

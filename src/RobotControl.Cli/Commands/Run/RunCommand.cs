@@ -29,7 +29,7 @@ internal sealed class RunCommand : ICliCommand
         var isVirtual = new Option<bool>("--virtual") { Description = "Run against the virtual robot (real firmware, simulated motors) on a virtual clock, deterministically and as fast as possible" };
         var duration = CliOption.Duration("--duration", "Loop time to run, e.g. 20s, 500ms, 2m", TimeSpan.FromMilliseconds(1), MaxDuration, TimeSpan.FromSeconds(20));
         var report = CliOption.OutputFile("--report", "Write the report (JSON) to this file (checked before the run starts)");
-        var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: ber=<bit error rate>, reset=<arm.location|id>@<time> (comma-separated)" };
+        var inject = new Option<string?>("--inject") { Description = $"Faults for the virtual robot, comma-separated: {FaultInjection.Syntax} (see docs/safety.md)" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (one load context each)" };
         var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
         var set = new Option<string[]>("--set") { Description = "Override a setting of a graph instance for this run, e.g. sim.endpoint=tcp://127.0.0.1:23456 (repeatable)", Arity = ArgumentArity.ZeroOrMore };
@@ -120,7 +120,7 @@ internal sealed class RunCommand : ICliCommand
             output.WriteLine($"report: {reportPath}");
         }
 
-        return result.DeadlineMisses == 0 && result.Faults.Count == 0 ? 0 : 1;
+        return result.DeadlineMisses == 0 && result.Faults.Count == 0 && result.Safety is not { Trips.Count: > 0 } ? 0 : 1;
     }
 
     /// <summary>The first measure of <paramref name="r"/> that is not finite (a report holds numbers only), or null.</summary>
@@ -171,6 +171,11 @@ internal sealed class RunCommand : ICliCommand
         output.WriteLine(string.Create(c, $"  tick time (us): median {r.TickMedianUs:F1}, p99 {r.TickP99Us:F1}, max {r.TickMaxUs:F1}"));
         output.WriteLine(string.Create(c, $"  tracking error (mm): rms {r.TrackingRmsMm:F3}, max {r.TrackingMaxMm:F3}"));
         output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries"));
+        foreach (var line in r.Safety?.Lines() ?? [])
+        {
+            output.WriteLine(line);
+        }
+
         output.WriteLine(string.Create(c, $"  faults: {r.Faults.Count}"));
         foreach (var f in r.Faults.Take(20))
         {

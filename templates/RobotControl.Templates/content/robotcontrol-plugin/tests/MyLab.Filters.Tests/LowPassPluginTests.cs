@@ -30,6 +30,6 @@ public sealed class LowPassPluginTests
     {
         Assert.Equal(2, PluginHarness.ReadSettings<LowPassSettings>("""{ "cutoff_hz": 2 }""").CutoffHz);
         var error = Assert.Throws<SettingsException>(() => PluginHarness.ReadSettings<LowPassSettings>("""{ "cutoff_hz": 1000 }"""));
-        Assert.Equal("cutoff_hz", Assert.Single(error.Errors).Setting);
+        Assert.Equal("cutoff_hz", Assert.Single(error.Errors).Path);
     }
 }

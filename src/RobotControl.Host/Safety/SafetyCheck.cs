@@ -1,0 +1,66 @@
+namespace RobotControl.Host.Safety;
+
+/// <summary>The per-cycle checks of the safety supervisor.</summary>
+public enum SafetyCheck
+{
+    /// <summary>A position, current or setpoint is NaN or infinite (a setpoint refused by the robot layer included).</summary>
+    NonFinite,
+
+    /// <summary>A module has not answered for longer than its limit.</summary>
+    ModuleSilent,
+
+    /// <summary>|goal sent − measured position| beyond the limit for longer than the time.</summary>
+    TrackingError,
+
+    /// <summary>A motor's current over its limit for longer than the time.</summary>
+    OverCurrent,
+
+    /// <summary>The cycle came too late: a gap of k loop periods or more since the previous one (a host stall).</summary>
+    DeadlineMiss,
+
+    /// <summary>The robot layer reports a module fault (firmware watchdog, hardware error).</summary>
+    ModuleFault,
+
+    /// <summary>An operator (console, CLI or pedal) asked for an emergency stop.</summary>
+    Operator,
+}
+
+/// <summary>What the robot does after a trip.</summary>
+public enum SafeState
+{
+    /// <summary>Goals frozen at the measured positions; motors stay on.</summary>
+    Hold,
+
+    /// <summary>Motors off (the modules' bridges disabled).</summary>
+    TorqueOff,
+}
+
+/// <summary>Report names of checks and safe states.</summary>
+public static class SafetyNames
+{
+    /// <summary>The check's name in the robot file and the report, e.g. <c>tracking_error</c>.</summary>
+    public static string Name(this SafetyCheck check) => check switch
+    {
+        SafetyCheck.NonFinite => "non_finite",
+        SafetyCheck.ModuleSilent => "module_silent",
+        SafetyCheck.TrackingError => "tracking_error",
+        SafetyCheck.OverCurrent => "over_current",
+        SafetyCheck.DeadlineMiss => "deadline_miss",
+        SafetyCheck.ModuleFault => "module_fault",
+        SafetyCheck.Operator => "operator",
+        _ => check.ToString(),
+    };
+
+    /// <summary><c>hold</c> or <c>torque_off</c>.</summary>
+    public static string Name(this SafeState state) => state == SafeState.Hold ? "hold" : "torque_off";
+}
+
+/// <summary>One trip.</summary>
+/// <param name="Timestamp">When it was detected, on the supervisor's clock.</param>
+/// <param name="Check">Which check.</param>
+/// <param name="Joint">The motor or module concerned (e.g. <c>right.elbow</c>), or empty.</param>
+/// <param name="Measured">The value measured (unit in <paramref name="Unit"/>).</param>
+/// <param name="Limit">The limit it crossed.</param>
+/// <param name="Unit">Unit of the value and the limit.</param>
+/// <param name="Action">The safe state taken.</param>
+public sealed record SafetyTrip(long Timestamp, SafetyCheck Check, string Joint, double Measured, double Limit, string Unit, SafeState Action);

@@ -1,0 +1,44 @@
+namespace RobotControl.Host.Safety;
+
+/// <summary>
+/// Thresholds of the safety checks and the safe state of each, from the robot file's optional <c>safety</c> section
+/// (<see cref="SafetySection"/>); every field has a default.
+/// </summary>
+public sealed record SafetyLimits
+{
+    /// <summary>Largest |goal sent − measured position| of a motor, output radians (default 0.35 rad, 20°).</summary>
+    public double TrackingErrorRad { get; init; } = 0.35;
+
+    /// <summary>How long the tracking error may stay beyond its limit, ms (default 50).</summary>
+    public double TrackingErrorMs { get; init; } = 50;
+
+    /// <summary>Current limit as a fraction of each motor's <c>current_limit</c> in the robot file (default 0.95).</summary>
+    public double CurrentLimitFraction { get; init; } = 0.95;
+
+    /// <summary>How long the current may stay over its limit, ms (default 50, as the dVRK's current check).</summary>
+    public double OverCurrentMs { get; init; } = 50;
+
+    /// <summary>How long a module may stay silent, ms (default 10).</summary>
+    public double ModuleSilentMs { get; init; } = 10;
+
+    /// <summary>Loop periods without a cycle that count as a stall (k consecutive deadline misses; default 10).</summary>
+    public int DeadlineMissesInARow { get; init; } = 10;
+
+    /// <summary>Safe state per check (defaults: hold for soft trips; torque off for a silent module, over-current and module faults).</summary>
+    public IReadOnlyDictionary<SafetyCheck, SafeState> SafeStates { get; init; } = DefaultSafeStates;
+
+    /// <summary>The defaults of <see cref="SafeStates"/>.</summary>
+    public static IReadOnlyDictionary<SafetyCheck, SafeState> DefaultSafeStates { get; } = new Dictionary<SafetyCheck, SafeState>
+    {
+        [SafetyCheck.NonFinite] = SafeState.Hold,
+        [SafetyCheck.ModuleSilent] = SafeState.TorqueOff,
+        [SafetyCheck.TrackingError] = SafeState.Hold,
+        [SafetyCheck.OverCurrent] = SafeState.TorqueOff,
+        [SafetyCheck.DeadlineMiss] = SafeState.Hold,
+        [SafetyCheck.ModuleFault] = SafeState.TorqueOff,
+        [SafetyCheck.Operator] = SafeState.Hold,
+    };
+
+    /// <summary>The safe state of <paramref name="check"/>.</summary>
+    public SafeState SafeStateOf(SafetyCheck check) => SafeStates.TryGetValue(check, out var s) ? s : DefaultSafeStates[check];
+}

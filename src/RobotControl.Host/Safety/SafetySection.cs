@@ -1,0 +1,101 @@
+using System.Text.Json;
+
+namespace RobotControl.Host.Safety;
+
+/// <summary>
+/// Reads the optional <c>safety</c> section of a robot file into <see cref="SafetyLimits"/>; absent fields keep their
+/// defaults. Example:
+/// <code>
+/// "safety": { "tracking_error_rad": 0.35, "tracking_error_ms": 50, "current_limit_fraction": 0.95,
+///             "over_current_ms": 50, "module_silent_ms": 10, "deadline_misses_in_a_row": 10,
+///             "safe_state": { "tracking_error": "hold", "over_current": "torque_off" } }
+/// </code>
+/// </summary>
+public static class SafetySection
+{
+    private static readonly string[] Fields =
+        ["tracking_error_rad", "tracking_error_ms", "current_limit_fraction", "over_current_ms", "module_silent_ms", "deadline_misses_in_a_row", "safe_state"];
+
+    /// <summary>Reads the <c>safety</c> section of the robot file at <paramref name="path"/> (defaults without one).</summary>
+    /// <exception cref="FormatException">A field is unknown, of the wrong type or out of range (one line naming the file and field).</exception>
+    public static SafetyLimits Load(string path)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(path);
+        using var doc = JsonDocument.Parse(File.ReadAllText(path), new JsonDocumentOptions { CommentHandling = JsonCommentHandling.Skip, AllowTrailingCommas = true });
+        return doc.RootElement.TryGetProperty("safety", out var section) ? Parse(section, path) : new SafetyLimits();
+    }
+
+    /// <summary>Reads a <c>safety</c> section; <paramref name="file"/> names it in messages.</summary>
+    /// <exception cref="FormatException">A field is unknown, of the wrong type or out of range.</exception>
+    public static SafetyLimits Parse(JsonElement section, string file)
+    {
+        if (section.ValueKind != JsonValueKind.Object)
+        {
+            throw new FormatException($"{file}: safety: expected an object");
+        }
+
+        foreach (var p in section.EnumerateObject())
+        {
+            if (Array.IndexOf(Fields, p.Name) < 0)
+            {
+                throw new FormatException($"{file}: safety.{p.Name}: unknown field (known: {string.Join(", ", Fields)})");
+            }
+        }
+
+        var d = new SafetyLimits();
+        return new SafetyLimits
+        {
+            TrackingErrorRad = Number(section, "tracking_error_rad", d.TrackingErrorRad, 1e-6, Math.PI, file),
+            TrackingErrorMs = Number(section, "tracking_error_ms", d.TrackingErrorMs, 0, 10_000, file),
+            CurrentLimitFraction = Number(section, "current_limit_fraction", d.CurrentLimitFraction, 0.05, 2, file),
+            OverCurrentMs = Number(section, "over_current_ms", d.OverCurrentMs, 0, 10_000, file),
+            ModuleSilentMs = Number(section, "module_silent_ms", d.ModuleSilentMs, 0, 10_000, file),
+            DeadlineMissesInARow = (int)Number(section, "deadline_misses_in_a_row", d.DeadlineMissesInARow, 1, 100_000, file, integer: true),
+            SafeStates = SafeStates(section, file),
+        };
+    }
+
+    private static double Number(JsonElement section, string name, double fallback, double min, double max, string file, bool integer = false)
+    {
+        if (!section.TryGetProperty(name, out var v))
+        {
+            return fallback;
+        }
+
+        if (v.ValueKind != JsonValueKind.Number || !v.TryGetDouble(out var x) || x < min || x > max || (integer && x != Math.Floor(x)))
+        {
+            throw new FormatException($"{file}: safety.{name}: expected {(integer ? "an integer" : "a number")} from {min} to {max}, got {v.GetRawText()}");
+        }
+
+        return x;
+    }
+
+    private static Dictionary<SafetyCheck, SafeState> SafeStates(JsonElement section, string file)
+    {
+        var states = new Dictionary<SafetyCheck, SafeState>(SafetyLimits.DefaultSafeStates);
+        if (!section.TryGetProperty("safe_state", out var map))
+        {
+            return states;
+        }
+
+        if (map.ValueKind != JsonValueKind.Object)
+        {
+            throw new FormatException($"{file}: safety.safe_state: expected an object of check -> \"hold\" or \"torque_off\"");
+        }
+
+        foreach (var p in map.EnumerateObject())
+        {
+            var check = Enum.GetValues<SafetyCheck>().Where(c => c.Name() == p.Name).Cast<SafetyCheck?>().FirstOrDefault()
+                ?? throw new FormatException($"{file}: safety.safe_state.{p.Name}: unknown check (known: {string.Join(", ", Enum.GetValues<SafetyCheck>().Select(c => c.Name()))})");
+            states[check] = p.Value.ValueKind == JsonValueKind.String ? p.Value.GetString() switch
+            {
+                "hold" => SafeState.Hold,
+                "torque_off" => SafeState.TorqueOff,
+                _ => throw new FormatException($"{file}: safety.safe_state.{p.Name}: expected \"hold\" or \"torque_off\", got {p.Value.GetRawText()}"),
+            }
+            : throw new FormatException($"{file}: safety.safe_state.{p.Name}: expected \"hold\" or \"torque_off\", got {p.Value.GetRawText()}");
+        }
+
+        return states;
+    }
+}

@@ -1,0 +1,75 @@
+using RobotControl.Host.Plugins;
+using RobotControl.Host.Safety;
+using RobotControl.Host.Session;
+using RobotControl.Robot.States;
+
+namespace RobotControl.Host.Tests.Safety;
+
+public sealed class RunLevelTests
+{
+    [Fact]
+    public void Init_homing_pedal_up_pedal_down_trip_estop_reset_init_and_homing_again()
+    {
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        var supervisor = session.Supervisor;
+        Assert.Equal(RunLevel.PedalUp, supervisor.Level);
+        supervisor.PedalDown("pedal");
+        session.RunVirtual(200);
+        Assert.Equal(RunLevel.PedalDown, supervisor.Level);
+
+        var elbow = session.Simulation!.Axes.Single(a => a.Config.FullName == "right.elbow");
+        elbow.CurrentSenseOffsetA = 2 * elbow.Config.Motor.CurrentLimitA;
+        session.RunVirtual(400);
+        Assert.Equal(RunLevel.EStop, supervisor.Level);
+        Assert.Throws<InvalidOperationException>(() => supervisor.PedalDown("pedal")); // no way out but a reset
+
+        elbow.CurrentSenseOffsetA = 0;
+        supervisor.Reset("operator");
+        Assert.Equal(RunLevel.Init, supervisor.Level);
+        Assert.NotEqual(RobotState.Enabled, session.Robot.State);
+        var homed = supervisor.Home("operator");
+        Assert.Equal(session.Robot.Motors.Count, homed.Count); // after a reset every motor is homed again
+        Assert.All(homed, r => Assert.True(r.Succeeded, r.Detail));
+        Assert.Equal(RunLevel.PedalUp, supervisor.Level);
+
+        var levels = supervisor.History.Select(h => (h.From, h.To)).ToList();
+        Assert.Equal(
+            [(RunLevel.Init, RunLevel.Homing), (RunLevel.Homing, RunLevel.PedalUp), (RunLevel.PedalUp, RunLevel.PedalDown), (RunLevel.PedalDown, RunLevel.EStop),
+             (RunLevel.EStop, RunLevel.Init), (RunLevel.Init, RunLevel.Homing), (RunLevel.Homing, RunLevel.PedalUp)],
+            levels);
+        Assert.All(supervisor.History, h => Assert.False(string.IsNullOrWhiteSpace(h.Reason)));
+        Assert.Equal("supervisor", supervisor.History[3].Source);
+        Assert.Equal("operator", supervisor.History[4].Source);
+    }
+
+    [Fact]
+    public void Nothing_moves_at_pedal_up_although_the_graph_commands_motion()
+    {
+        var goal = RobotControl.Bus.Protocol.ControlTable.Firmware["goal_position"];
+        GoalFrameSpy? spy = null;
+        using var session = RobotSession.Open(
+            new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json"), WrapLink = (link, clock) => spy = new GoalFrameSpy(link, clock, goal.At(0), goal.Stride) },
+            HostPlugins.Catalog());
+        var before = spy!.Frames.Count;
+        session.RunVirtual(1000);
+        Assert.Equal(RunLevel.PedalUp, session.Supervisor.Level);
+        var frames = spy.Frames.Skip(before).ToList();
+        Assert.True(frames.Count > 100);
+        Assert.All(frames, f => Assert.All(f.Goals, g => Assert.Equal(frames[0].Goals[g.Key], g.Value)));
+        Assert.True(session.Node.CommandedThisTick(0)); // the graph did command the right arm
+        Assert.Empty(session.Supervisor.Trips);
+    }
+
+    [Fact]
+    public void The_declared_table_refuses_moves_it_does_not_list()
+    {
+        var machine = new RunLevelMachine(TimeProvider.System);
+        var error = Assert.Throws<InvalidOperationException>(() => machine.MoveTo(RunLevel.PedalDown, "pedal", "test"));
+        Assert.Contains("INIT cannot go to PEDAL_DOWN", error.Message, StringComparison.Ordinal);
+        Assert.Equal(RunLevel.Init, machine.Current);
+        machine.MoveTo(RunLevel.EStop, "cli", "operator stop");
+        Assert.False(machine.CanMoveTo(RunLevel.PedalUp));
+        Assert.True(machine.CanMoveTo(RunLevel.Init));
+        Assert.Single(machine.History);
+    }
+}

@@ -1,0 +1,48 @@
+using System.Text.Json;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Safety;
+
+namespace RobotControl.Host.Tests.Safety;
+
+public sealed class SafetyConfigTests
+{
+    [Fact]
+    public void A_robot_file_without_a_safety_section_gets_the_defaults()
+    {
+        var robot = Path.Combine(Path.GetDirectoryName(Path.GetDirectoryName(Graphs.Path("teleop-lb.json")))!, "hardware", "robots", "lb-1.0.json");
+        var limits = SafetySection.Load(robot);
+        Assert.Equal(new SafetyLimits().TrackingErrorRad, limits.TrackingErrorRad);
+        Assert.Equal(SafeState.TorqueOff, limits.SafeStateOf(SafetyCheck.OverCurrent));
+        Assert.Equal(SafeState.Hold, limits.SafeStateOf(SafetyCheck.TrackingError));
+    }
+
+    [Fact]
+    public void The_section_sets_thresholds_and_safe_states_and_names_a_bad_field()
+    {
+        using var doc = JsonDocument.Parse("""{ "tracking_error_rad": 0.1, "over_current_ms": 20, "safe_state": { "tracking_error": "torque_off" } }""");
+        var limits = SafetySection.Parse(doc.RootElement, "r.json");
+        Assert.Equal(0.1, limits.TrackingErrorRad);
+        Assert.Equal(20, limits.OverCurrentMs);
+        Assert.Equal(SafeState.TorqueOff, limits.SafeStateOf(SafetyCheck.TrackingError));
+
+        using var bad = JsonDocument.Parse("""{ "over_current_ms": -1 }""");
+        var error = Assert.Throws<FormatException>(() => SafetySection.Parse(bad.RootElement, "r.json"));
+        Assert.Equal("r.json: safety.over_current_ms: expected a number from 0 to 10000, got -1", error.Message);
+        using var unknown = JsonDocument.Parse("""{ "safe_state": { "tracking_error": "brake" } }""");
+        Assert.Contains("safety.safe_state.tracking_error", Assert.Throws<FormatException>(() => SafetySection.Parse(unknown.RootElement, "r.json")).Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Inject_parses_the_safety_faults_and_keeps_ber_and_reset()
+    {
+        var f = FaultInjection.Parse("ber=1e-5,reset=right.shoulder@5s,stall=100ms@5s,stuck=right.elbow@5s,current=right.elbow@2.5s,nan=ik_right@5s");
+        Assert.Equal(1e-5, f.BitErrorRate);
+        Assert.Single(f.Resets);
+        Assert.Equal([TimedFaultKind.Stall, TimedFaultKind.Stuck, TimedFaultKind.Current, TimedFaultKind.Nan], f.TimedFaults.Select(t => t.Kind));
+        Assert.Equal(TimeSpan.FromMilliseconds(100), f.TimedFaults[0].Duration);
+        Assert.Equal(TimeSpan.FromSeconds(2.5), f.TimedFaults[2].At);
+        Assert.Equal("ber=1E-05,reset=right.shoulder@5s,stall=100ms@5s,stuck=right.elbow@5s,current=right.elbow@2.5s,nan=ik_right@5s", f.ToString());
+        Assert.Contains("expected stuck=<arm.motor>@<time>", Assert.Throws<FormatException>(() => FaultInjection.Parse("stuck=right.elbow")).Message, StringComparison.Ordinal);
+        Assert.Contains("unknown fault", Assert.Throws<FormatException>(() => FaultInjection.Parse("melt=right.elbow@1s")).Message, StringComparison.Ordinal);
+    }
+}

@@ -1,0 +1,138 @@
+using RobotControl.Host.Safety;
+
+namespace RobotControl.Host.Tests.Safety;
+
+/// <summary>Each check against its injected fault on the virtual robot (teleop graph, fault at 1 s).</summary>
+public sealed class SafetyFaultTests
+{
+    private const double FaultAtS = 1.0;
+
+    [Fact]
+    public void A_current_spike_trips_over_current_within_its_time_and_turns_the_torque_off()
+    {
+        var run = SafetyRun.Of("current=right.elbow@1s", 1.3);
+        var trip = run.Trip(SafetyCheck.OverCurrent);
+        Assert.Equal("right.elbow", trip.Joint);
+        Assert.True(trip.Measured > trip.Limit);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.050, 0.060); // 50 ms persistence + the cycles until the sensor is read
+        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
+        AssertCommon(run, "over_current");
+    }
+
+    [Fact]
+    public void A_silent_module_trips_module_silent_within_its_limit_and_turns_the_torque_off()
+    {
+        var run = SafetyRun.Of("silent=right.forearm@1s", 1.3);
+        var trip = run.Trip(SafetyCheck.ModuleSilent);
+        Assert.Equal("right.forearm", trip.Joint);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.010, 0.020); // 10 ms limit, checked once per bus cycle
+        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
+        AssertCommon(run, "module_silent");
+    }
+
+    [Fact]
+    public void A_stuck_joint_trips_within_300_ms_and_turns_the_torque_off()
+    {
+        var run = SafetyRun.Of("stuck=right.elbow@1s", 1.5);
+        var first = run.Safety.Trips[0];
+        Assert.Contains(first.Check, new[] { SafetyCheck.OverCurrent, SafetyCheck.TrackingError });
+        Assert.Equal("right.elbow", first.Joint);
+        Assert.InRange(first.TimeSeconds - FaultAtS, 0, 0.300); // how soon depends on how hard the graph drives the joint: 272 ms measured
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
+        AssertCommon(run, first.Check.Name());
+    }
+
+    [Fact]
+    public void With_the_current_check_relaxed_in_the_robot_file_a_stuck_joint_trips_tracking_error_and_holds()
+    {
+        // The teleop graph on a copy of the robot file whose safety section relaxes the current check and tightens tracking.
+        var dir = Directory.CreateTempSubdirectory("safety-");
+        try
+        {
+            var source = Graphs.Path("teleop-lb.json");
+            var robotPath = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(source)!, "../hardware/robots/lb-1.0.json"));
+            var components = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(robotPath)!, "../components")).Replace('\\', '/');
+            var robot = File.ReadAllText(robotPath).Replace("\"../components/", $"\"{components}/", StringComparison.Ordinal).TrimEnd();
+            robot = robot[..robot.LastIndexOf('}')] + ", \"safety\": { \"tracking_error_rad\": 0.05, \"tracking_error_ms\": 20, \"current_limit_fraction\": 2 } }";
+            File.WriteAllText(Path.Combine(dir.FullName, "lb.json"), robot);
+            var graph = Path.Combine(dir.FullName, "teleop.json");
+            File.WriteAllText(graph, File.ReadAllText(source)
+                .Replace("\"../hardware/robots/lb-1.0.json\"", "\"lb.json\"", StringComparison.Ordinal)
+                .Replace("\"trajectories/", $"\"{Path.GetDirectoryName(source)!.Replace('\\', '/')}/trajectories/", StringComparison.Ordinal));
+
+            var run = SafetyRun.Of("stuck=right.elbow@1s", 1.5, graph);
+            var trip = run.Trip(SafetyCheck.TrackingError);
+            Assert.Equal("right.elbow", trip.Joint);
+            Assert.Equal(0.05, trip.Limit);
+            Assert.InRange(trip.TimeSeconds - FaultAtS, 0.020, 0.400); // 376 ms measured: the error first grows past 0.05 rad at the graph's speed, then persists 20 ms
+            Assert.True(trip.Measured > 0.05);
+            Assert.DoesNotContain(run.Safety.Trips, t => t.Check == SafetyCheck.OverCurrent);
+            Assert.Equal(SafeState.Hold, trip.Action);
+            Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven"));
+            Assert.True(run.GoalsFrozenFrom(trip.TimeSeconds + 0.1), "goals moved after the hold settled");
+            AssertCommon(run, "tracking_error");
+        }
+        finally
+        {
+            dir.Delete(recursive: true);
+        }
+    }
+
+    [Fact]
+    public void A_nan_setpoint_trips_at_once_and_the_arms_hold_where_they_are()
+    {
+        var run = SafetyRun.Of("nan=ik_right@1s", 1.5);
+        var trip = run.Trip(SafetyCheck.NonFinite);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0, 0.003); // the next bus cycle (2.5 ms measured)
+        Assert.Equal(SafeState.Hold, trip.Action);
+        Assert.Single(run.Safety.Trips);
+        Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven"));
+        Assert.True(run.GoalsFrozenFrom(trip.TimeSeconds + 0.1), "goals moved after the hold settled");
+        Assert.All(run.Motors, m => Assert.InRange(Math.Abs(m.OutputRad - m.GoalRad), 0, 0.05));
+        AssertCommon(run, "non_finite");
+    }
+
+    [Fact]
+    public void A_host_stall_is_reported_when_the_host_comes_back_the_watchdogs_stopped_the_motors_and_nothing_resumes()
+    {
+        var run = SafetyRun.Of("stall=100ms@1s", 1.5);
+        var trip = run.Trip(SafetyCheck.DeadlineMiss);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.100, 0.105);
+        Assert.InRange(trip.Measured, 100, 105);
+        var watchdog = run.Trip(SafetyCheck.ModuleFault);
+        Assert.Equal(SafeState.TorqueOff, watchdog.Action);
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} driven again"));
+        AssertCommon(run, "deadline_miss");
+    }
+
+    [Fact]
+    public void The_shipped_teleop_graph_goes_to_pedal_down_without_a_trip_and_keeps_its_tracking_figures()
+    {
+        var run = SafetyRun.Of(string.Empty, 20);
+        Assert.Equal([RunLevel.Homing, RunLevel.PedalUp, RunLevel.PedalDown], run.Safety.RunLevels.Select(l => l.To));
+        Assert.Equal(RunLevel.Init, run.Safety.RunLevels[0].From);
+        Assert.Empty(run.Safety.Trips);
+        Assert.Equal(0, run.Safety.StepCapHits);
+        Assert.Equal(RunLevel.PedalDown, run.FinalLevel);
+        Assert.Equal(20000, run.Report.Ticks);
+        Assert.Equal(0, run.Report.DeadlineMisses);
+        Assert.Equal(0.6932, Math.Round(run.Report.TrackingRmsMm, 4));
+        Assert.Equal(1.598, Math.Round(run.Report.TrackingMaxMm, 3));
+        Assert.InRange(run.WorstStepOverCap(), 0, 1);
+    }
+
+    /// <summary>E-STOP at the end, no frame over the step cap, and the report names the trip.</summary>
+    private static void AssertCommon(SafetyRun run, string check)
+    {
+        Assert.Equal(RunLevel.EStop, run.FinalLevel);
+        Assert.Equal(RunLevel.EStop, run.Safety.FinalRunLevel);
+        Assert.Equal(RunLevel.PedalDown, run.Safety.RunLevels[^1].From);
+        Assert.True(run.Spy.Frames.Count > 100);
+        Assert.InRange(run.WorstStepOverCap(), 0, 1);
+        var json = run.Report.ToJson();
+        Assert.Contains("\"final_run_level\": \"E_STOP\"", json, StringComparison.Ordinal);
+        Assert.Contains($"\"check\": \"{check}\"", json, StringComparison.Ordinal);
+    }
+}

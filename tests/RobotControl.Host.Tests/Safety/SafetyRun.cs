@@ -1,0 +1,85 @@
+using RobotControl.Bus.Protocol;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Plugins;
+using RobotControl.Host.Safety;
+
+namespace RobotControl.Host.Tests.Safety;
+
+/// <summary>A headless virtual run of the shipped teleop graph with faults injected, its goal frames and the virtual modules read back at the end.</summary>
+internal sealed class SafetyRun
+{
+    private SafetyRun(RunReport report, GoalFrameSpy spy, double originS, RunLevel level, IReadOnlyList<MotorEnd> motors)
+    {
+        Report = report;
+        Spy = spy;
+        OriginS = originS;
+        FinalLevel = level;
+        Motors = motors;
+    }
+
+    public RunReport Report { get; }
+
+    public GoalFrameSpy Spy { get; }
+
+    /// <summary>Bus time of the run's start, s (report times count from it).</summary>
+    public double OriginS { get; }
+
+    public RunLevel FinalLevel { get; }
+
+    public IReadOnlyList<MotorEnd> Motors { get; }
+
+    public SafetyReport Safety => Report.Safety!;
+
+    public static SafetyRun Of(string inject, double seconds, string? graph = null)
+    {
+        var goal = ControlTable.Firmware["goal_position"];
+        GoalFrameSpy? spy = null;
+        double origin = 0;
+        var level = RunLevel.Init;
+        var motors = new List<MotorEnd>();
+        var report = HeadlessRun.RunVirtual(
+            new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject) },
+            HostPlugins.Catalog(),
+            new VirtualRunHooks
+            {
+                WrapLink = (link, clock) => spy = new GoalFrameSpy(link, clock, goal.At(0), goal.Stride),
+                AfterRun = session =>
+                {
+                    origin = session.Supervisor.Origin / (double)session.Clock.TimestampFrequency;
+                    level = session.Supervisor.Level;
+                    foreach (var m in session.Robot.Motors)
+                    {
+                        var axis = session.Simulation!.Axes.Single(a => a.Config.FullName == m.Config.FullName);
+                        motors.Add(new MotorEnd(m.Config.FullName, m.Config.ModuleId, m.Config.Channel, m.Config.CountsPerRad, m.SpeedLimitRadS, axis.DriverEnabled, axis.OutputAngleRad, session.Robot.SentGoalRad(m)));
+                    }
+                },
+            });
+        return new SafetyRun(report, spy!, origin, level, motors);
+    }
+
+    /// <summary>The first trip of <paramref name="check"/> (fails the test if none).</summary>
+    public SafetyReport.TripEntry Trip(SafetyCheck check) =>
+        Safety.Trips.FirstOrDefault(t => t.Check == check) ?? throw new Xunit.Sdk.XunitException($"no {check.Name()} trip; trips: {string.Join("; ", Safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds}"))}");
+
+    /// <summary>
+    /// The largest goal step any frame the virtual robot received made, as a fraction of the step cap, while the motors
+    /// are driven: up to the first torque-off trip, after which the goals only mirror the measured positions of motors
+    /// that are off. The first frame (before any cap applies) is the reference.
+    /// </summary>
+    public double WorstStepOverCap()
+    {
+        var off = Safety.Trips.FirstOrDefault(t => t.Action == SafeState.TorqueOff)?.TimeSeconds ?? double.PositiveInfinity;
+        return Spy.WorstStepOverCap(Motors.Select(m => (m.ModuleId, m.Channel, m.CountsPerRad, m.SpeedLimitRadS)), 1, OriginS + off);
+    }
+
+    /// <summary>True when every goal frame from <paramref name="fromS"/> (run time) on carries the same goals.</summary>
+    public bool GoalsFrozenFrom(double fromS)
+    {
+        var frames = Spy.Frames.Where(f => f.TimeS - OriginS >= fromS).ToList();
+        Assert.NotEmpty(frames);
+        return frames.All(f => Motors.All(m => !f.Goals.TryGetValue(m.ModuleId, out var g) || g[m.Channel] == frames[0].Goals[m.ModuleId][m.Channel]));
+    }
+}
+
+/// <summary>A motor at the end of a run: what its virtual module does.</summary>
+internal sealed record MotorEnd(string Name, byte ModuleId, int Channel, double CountsPerRad, double SpeedLimitRadS, bool DriverEnabled, double OutputRad, double GoalRad);
