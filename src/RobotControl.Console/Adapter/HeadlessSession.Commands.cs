@@ -1,3 +1,4 @@
+using RobotControl.Modules;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Robot.Bus;

@@ -1,3 +1,4 @@
+using RobotControl.Modules;
 using System.Diagnostics;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Transports;
@@ -5,7 +6,7 @@ using RobotControl.Hardware.Model;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
 using RobotControl.Runtime.GraphFiles;
-using RobotControl.Runtime.Harness;
+using RobotControl.Host.Harness;
 using RobotControl.Runtime.Loop;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
@@ -247,7 +248,7 @@ public sealed partial class HeadlessSession : IConsoleSession
 
         while (_bus.Events.TryDequeue(out var line))
         {
-            _events.Add(Now, "robot", line);
+            _events.Add(Now, "robot", line.Message);
         }
 
         var now = Now;
@@ -389,7 +390,7 @@ public sealed partial class HeadlessSession : IConsoleSession
                 c.FirmwareVersion,
                 ModuleStatus.Cause(status.ResetCause),
                 c.Resets,
-                status.WatchdogMs == 0 ? "off" : $"{status.WatchdogMs} ms{((status.Errors & HardwareErrors.BusWatchdog) != 0 ? ", TRIPPED" : string.Empty)}",
+                status.WatchdogMs == 0 ? "off" : $"{status.WatchdogMs} ms{(status.Errors.HasAny(HardwareErrors.BusWatchdog) ? ", TRIPPED" : string.Empty)}",
                 ModuleStatus.Names(status.Errors),
                 motors));
         }

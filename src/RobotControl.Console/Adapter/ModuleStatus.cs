@@ -1,3 +1,5 @@
+using RobotControl.Bus.Protocol;
+using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 
 namespace RobotControl.WebConsole.Adapter;
@@ -33,20 +35,12 @@ internal sealed record ModuleStatus(HardwareErrors Errors, int ResetCause, int W
             errors);
     }
 
-    /// <summary>Names of the set bits of <paramref name="bits"/>.</summary>
+    /// <summary>Names of the set bits of <paramref name="bits"/>, as the control table names them.</summary>
     public static IReadOnlyList<string> Names(HardwareErrors bits) =>
-        bits == HardwareErrors.None ? [] : [.. Enum.GetValues<HardwareErrors>().Where(b => b != HardwareErrors.None && bits.HasFlag(b)).Select(b => b.ToString())];
+        bits.IsNone ? [] : bits.ToString().Split(", ");
 
-    /// <summary>A reset cause in words.</summary>
-    public static string Cause(int cause) => cause switch
-    {
-        0 => "none since acknowledged",
-        1 => "power-on",
-        2 => "brown-out",
-        3 => "watchdog",
-        4 => "software (reboot)",
-        5 => "reset pin",
-        6 => "lockup",
-        _ => $"cause {cause}",
-    };
+    /// <summary>A reset cause in words, as the control table names it.</summary>
+    public static string Cause(int cause) =>
+        cause == 0 ? "none since acknowledged"
+        : ControlTable.Firmware.Codes("reset_cause").TryGetValue(cause, out var name) ? name : $"cause {cause}";
 }

@@ -1,5 +1,5 @@
 using RobotControl.Bus.Protocol;
-using RobotControl.Robot.Modules;
+using RobotControl.Modules;
 
 namespace RobotControl.WebConsole.Adapter;
 
