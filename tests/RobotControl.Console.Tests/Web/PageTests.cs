@@ -81,7 +81,7 @@ public sealed class PageTests(ConsoleFixture console)
         await page.GetByLabel($"current limit of {Elbow}").FillAsync("0.3");
         await page.GetByTestId($"write-current_limit-{Elbow}").ClickAsync();
         await Expect(page, "#message.error", "refused current_limit");
-        Assert.Contains("data limit error", await page.Locator("#message").TextContentAsync(), StringComparison.Ordinal);
+        Assert.Contains("error 0x0", await page.Locator("#message").TextContentAsync(), StringComparison.Ordinal);
         await page.ReloadAsync();
         await page.WaitForSelectorAsync($"[data-testid=\"position-{Elbow}\"]");
         await page.WaitForTimeoutAsync(600);
