@@ -133,7 +133,8 @@ public sealed class CoppeliaSimPluginTests
         var options = new RunOptions
         {
             GraphPath = Path.Combine(BridgeTestSupport.Root, "graphs/teleop-lb-coppeliasim.json"),
-            Duration = TimeSpan.FromSeconds(8),
+            // Long enough for kill, detection, back-off and reconnection on a loaded machine (the run is paced to wall time).
+            Duration = TimeSpan.FromSeconds(15),
             SettingOverrides = [new SettingOverride("sim", "endpoint", server.Endpoint), new SettingOverride("sim", "call_timeout_ms", "300")],
         };
 
