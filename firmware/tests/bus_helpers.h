@@ -126,4 +126,23 @@ static inline void simulate(rcfw_bus *bus, int module, int motor, motor_model *m
         rcfw_set_hall(bus, module, motor, model_hall(mm));
     }
 }
+/* Writes kp = 500 then kp = 600 to module ID 1 (two parameter saves) and returns the FRAM address of the parameter
+ * slot holding the newer copy (the one with kp 600). */
+static inline uint16_t write_kp_twice_newest_slot(rcfw_bus *bus)
+{
+    uint16_t kp = 500;
+    wr(bus, 1, RCFW_CT_KP, &kp, 2);
+    rcfw_advance_us(bus, 1000);
+    kp = 600;
+    wr(bus, 1, RCFW_CT_KP, &kp, 2);
+    rcfw_advance_us(bus, 1000);
+    uint8_t s0[8], s1[8];
+    rcfw_fram_peek(bus, 0, RCFW_FRAM_PARAMS_A, s0, 8);
+    rcfw_fram_peek(bus, 0, RCFW_FRAM_PARAMS_B, s1, 8);
+    uint32_t q0, q1;
+    memcpy(&q0, s0 + 4, 4);
+    memcpy(&q1, s1 + 4, 4);
+    return q1 > q0 ? RCFW_FRAM_PARAMS_B : RCFW_FRAM_PARAMS_A;
+}
+
 #endif

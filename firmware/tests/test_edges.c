@@ -96,19 +96,7 @@ static void fram_sequence_wraps(void)
     /* Two parameter copies with sequence numbers 0xFFFFFFFF and 0 (the counter wrapped): 0 is the newer one. */
     const uint8_t ids[1] = {1}, motors[1] = {1};
     rcfw_bus *bus = rcfw_bus_create(1, ids, motors);
-    uint16_t kp = 500;
-    wr(bus, 1, RCFW_CT_KP, &kp, 2);
-    rcfw_advance_us(bus, 1000);
-    kp = 600;
-    wr(bus, 1, RCFW_CT_KP, &kp, 2);
-    rcfw_advance_us(bus, 1000);
-    uint8_t s0[8], s1[8];
-    rcfw_fram_peek(bus, 0, RCFW_FRAM_PARAMS_A, s0, 8);
-    rcfw_fram_peek(bus, 0, RCFW_FRAM_PARAMS_B, s1, 8);
-    uint32_t q0, q1;
-    memcpy(&q0, s0 + 4, 4);
-    memcpy(&q1, s1 + 4, 4);
-    uint16_t newest = q1 > q0 ? RCFW_FRAM_PARAMS_B : RCFW_FRAM_PARAMS_A;
+    uint16_t newest = write_kp_twice_newest_slot(bus); /* kp 500, then 600 */
     uint16_t older = newest == RCFW_FRAM_PARAMS_A ? RCFW_FRAM_PARAMS_B : RCFW_FRAM_PARAMS_A;
     set_slot_sequence(bus, older, 0xFFFFFFFFu);
     set_slot_sequence(bus, newest, 0u);

@@ -111,19 +111,7 @@ static void blank_and_corrupt_fram(void)
     CHECK(peek8(bus, 0, RCFW_CT_HARDWARE_ERROR_STATUS) & RCFW_HWERR_PARAMS_LOST);
     CHECK_EQ(peek8(bus, 0, RCFW_CT_ID), 1);
     /* corrupting only the newest slot falls back to the older one */
-    uint16_t kp = 500;
-    wr(bus, 1, RCFW_CT_KP, &kp, 2);
-    rcfw_advance_us(bus, 1000);
-    kp = 600;
-    wr(bus, 1, RCFW_CT_KP, &kp, 2);
-    rcfw_advance_us(bus, 1000);
-    uint8_t s0[8], s1[8];
-    rcfw_fram_peek(bus, 0, RCFW_FRAM_PARAMS_A, s0, 8);
-    rcfw_fram_peek(bus, 0, RCFW_FRAM_PARAMS_B, s1, 8);
-    uint32_t q0, q1;
-    memcpy(&q0, s0 + 4, 4);
-    memcpy(&q1, s1 + 4, 4);
-    uint16_t newest = q1 > q0 ? RCFW_FRAM_PARAMS_B : RCFW_FRAM_PARAMS_A;
+    uint16_t newest = write_kp_twice_newest_slot(bus); /* kp 500, then 600 */
     rcfw_fram_peek(bus, 0, (uint16_t)(newest + 30), &b, 1);
     b ^= 1;
     rcfw_fram_poke(bus, 0, (uint16_t)(newest + 30), &b, 1);
