@@ -13,8 +13,8 @@ public sealed class OpenHapticsReadingTests
     public void Scripted_positions_and_buttons_arrive_in_the_device_frame_in_mm()
     {
         FakeHdLibrary.Key("right", 0, 10, -20, 30, yaw: 0.3);
-        FakeHdLibrary.Key("right", 300, 15, -25, 35, yaw: 0.3, buttons: 1);
-        FakeHdLibrary.Key("right", 600, 15, -25, 35, yaw: -0.2, buttons: 2);
+        FakeHdLibrary.Key("right", 2000, 15, -25, 35, yaw: 0.3, buttons: 1); // stages 2 s apart: a starved test thread still reads each
+        FakeHdLibrary.Key("right", 4000, 15, -25, 35, yaw: -0.2, buttons: 2);
         var touch = new PluginDriver(FakeTouch.Plugin(FakeTouch.Settings()));
         touch.Start();
         try
@@ -27,12 +27,12 @@ public sealed class OpenHapticsReadingTests
             Assert.Equal(0.0, touch["pitch"], 9);
             Assert.Equal((0.0, 0.0), (touch["button1"], touch["button2"]));
 
-            FakeTouch.TickToFrame(touch, "right", 350);
+            FakeTouch.TickToFrame(touch, "right", 2050);
             touch.Tick();
             Assert.Equal((15.0, -25.0, 35.0), touch.Xyz());
             Assert.Equal((1.0, 0.0), (touch["button1"], touch["button2"]));
 
-            FakeTouch.TickToFrame(touch, "right", 650);
+            FakeTouch.TickToFrame(touch, "right", 4050);
             touch.Tick();
             Assert.Equal(-0.2, touch["yaw"], 9);
             Assert.Equal((0.0, 1.0), (touch["button1"], touch["button2"]));
