@@ -34,7 +34,7 @@ public sealed class HeadlessRunTests
         using var doc = System.Text.Json.JsonDocument.Parse(json);
         var root = doc.RootElement;
 
-        Assert.Equal(["duration_s", "ticks", "deadline_misses", "tick_us", "tracking_error_mm", "bus", "faults"], root.EnumerateObject().Select(p => p.Name));
+        Assert.Equal(["duration_s", "ticks", "deadline_misses", "tick_us", "tracking_error_mm", "bus", "faults", "interrupted", "stopped_on_fault"], root.EnumerateObject().Select(p => p.Name));
         Assert.Equal(["median", "p99", "max"], root.GetProperty("tick_us").EnumerateObject().Select(p => p.Name));
         Assert.Equal(["rms", "max"], root.GetProperty("tracking_error_mm").EnumerateObject().Select(p => p.Name));
         Assert.Equal(["frames", "crc_errors", "timeouts", "retries"], root.GetProperty("bus").EnumerateObject().Select(p => p.Name));
