@@ -1,3 +1,4 @@
+using RobotControl.Host.Safety;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
 using RobotControl.Robot.States;
@@ -6,12 +7,13 @@ namespace RobotControl.Host.Harness;
 
 /// <summary>
 /// When a run must stop: a stop request (Ctrl+C, SIGTERM), or a robot fault that leaves the arm unable to follow
-/// its commands (a module stopped its motors, latched a hardware error or stopped answering) unless the run was told
-/// to continue. A module counts as stopped answering once it has been missing for longer than its bus watchdog
+/// its commands (a module stopped its motors, latched a hardware error or stopped answering, or a safety trip
+/// switched the motors off) unless the run was told to continue. A trip whose safe state is hold does not end the
+/// run: the arms hold at E-STOP and the report names the trip. A module counts as stopped answering once it has been missing for longer than its bus watchdog
 /// period (by then it has stopped its motors itself); a few lost replies on a busy link do not stop the run.
 /// Checked once per bus cycle (virtual) or every few milliseconds (real time); allocates only when it stops.
 /// </summary>
-internal sealed class FaultStop(BusRobot robot, bool continueOnFault, CancellationToken stop)
+internal sealed class FaultStop(BusRobot robot, bool continueOnFault, CancellationToken stop, SafetySupervisor? supervisor = null)
 {
     private readonly TimeProvider _clock = robot.Client.Time;
     private readonly long _grace = robot.Client.Time.TimestampFrequency * Math.Max(1, robot.Definition.Modules.WatchdogMs) / 1000;
@@ -34,6 +36,15 @@ internal sealed class FaultStop(BusRobot robot, bool continueOnFault, Cancellati
         if (continueOnFault)
         {
             return false;
+        }
+
+        if (supervisor is { MotorsTrippedOff: true })
+        {
+            var trip = supervisor.Trips.LastOrDefault(t => t.Action == SafeState.TorqueOff);
+            var what = trip is null ? "a safety trip" : $"safety trip {trip.Check.Name()} {trip.Joint}".TrimEnd();
+            var cause = robot.StateHistory.LastOrDefault(t => t.To == RobotState.Fault)?.Reason;
+            Fault = cause is null ? $"{what} switched the motors off" : $"{what} switched the motors off ({cause})";
+            return true;
         }
 
         if (robot.State == RobotState.Fault)

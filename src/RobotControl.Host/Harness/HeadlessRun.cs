@@ -76,7 +76,7 @@ public static class HeadlessRun
         var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
         var reported = 0L;
-        var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop);
+        var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
         session.RunVirtual(
             ticks,
             () =>
@@ -149,7 +149,7 @@ public static class HeadlessRun
         var clock = session.Clock;
         var faults = new List<FaultEntry>();
         DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
-        var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop);
+        var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
         var nextProgress = options.ProgressInterval;
         StopCheck check;
         var threads = options.Threads ?? RealtimeThreads.Default;

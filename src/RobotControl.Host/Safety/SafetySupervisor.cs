@@ -99,6 +99,9 @@ public sealed class SafetySupervisor
     /// <summary>The robot layer supervised.</summary>
     public BusRobot Robot => _robot;
 
+    /// <summary>True once a trip has switched the motors off (until the next <see cref="Home"/>): the arms cannot move.</summary>
+    public bool MotorsTrippedOff => _torqueOffTaken;
+
     /// <summary>Seconds from <see cref="Origin"/> to <paramref name="timestamp"/> (negative before it).</summary>
     public double Seconds(long timestamp) => (timestamp - Origin) / (double)_time.TimestampFrequency;
 

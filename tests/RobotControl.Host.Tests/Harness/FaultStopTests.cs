@@ -1,6 +1,7 @@
 using RobotControl.Bus.Protocol;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Plugins;
+using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Robot.States;
 
@@ -9,19 +10,7 @@ namespace RobotControl.Host.Tests.Harness;
 /// <summary>A robot that faults mid-run stops the run; the stop switches torque off and reads every module back.</summary>
 public sealed class FaultStopTests
 {
-    private static string Graph()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            var path = Path.Combine(dir.FullName, "graphs", "teleop-lb.json");
-            if (File.Exists(path))
-            {
-                return path;
-            }
-        }
-
-        throw new FileNotFoundException("graphs/teleop-lb.json");
-    }
+    private static string Graph() => Graphs.Path("teleop-lb.json");
 
     /// <summary>Arms module 1's bus watchdog at 1 ms and lets 20 ms of bus time pass in silence: it trips.</summary>
     private static void TripWatchdog(RobotSession session)
@@ -36,7 +25,7 @@ public sealed class FaultStopTests
     public void A_tripped_watchdog_stops_the_run_and_the_stop_leaves_every_module_torque_off()
     {
         using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph() }, HostPlugins.Catalog());
-        var stop = new FaultStop(session.Robot, continueOnFault: false, CancellationToken.None);
+        var stop = new FaultStop(session.Robot, continueOnFault: false, CancellationToken.None, session.Supervisor);
         session.RunVirtual(200, stopWhen: stop.ShouldStop);
         Assert.Null(stop.Fault);
         Assert.Equal(200, session.Loop.TickCount);
@@ -46,7 +35,8 @@ public sealed class FaultStopTests
         Assert.True(session.Loop.TickCount < 1200, $"ran {session.Loop.TickCount} ticks after the trip");
         Assert.Contains("watchdog", stop.Fault, StringComparison.Ordinal);
         Assert.False(stop.Interrupted);
-        Assert.Equal(RobotState.Fault, session.Robot.State);
+        Assert.NotEqual(RobotState.Enabled, session.Robot.State); // the supervisor's module_fault trip switched the motors off
+        Assert.Equal(RunLevel.EStop, session.Supervisor.Level);
 
         var check = session.Stop();
         Assert.True(check.TorqueOff, string.Join("; ", check.TorqueOn.Concat(check.Unreachable)));
@@ -60,7 +50,7 @@ public sealed class FaultStopTests
     {
         using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph() }, HostPlugins.Catalog());
         using var cancel = new CancellationTokenSource();
-        var stop = new FaultStop(session.Robot, continueOnFault: true, cancel.Token);
+        var stop = new FaultStop(session.Robot, continueOnFault: true, cancel.Token, session.Supervisor);
         TripWatchdog(session);
         session.RunVirtual(500, stopWhen: stop.ShouldStop);
         Assert.Equal(500, session.Loop.TickCount);
