@@ -1,3 +1,4 @@
+using System.Globalization;
 using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
@@ -116,6 +117,15 @@ public sealed class SafetySupervisor
     /// <exception cref="InvalidOperationException">Not at INIT, or homing incomplete (the message says how many motors failed).</exception>
     public IReadOnlyList<HomingResult> Home(string source)
     {
+        if (Level == RunLevel.EStop)
+        {
+            var trips = Trips;
+            var trip = trips.Count > 0 ? trips[0] : null;
+            throw new InvalidOperationException(trip is null
+                ? $"homing ({source}) refused: the run level is E_STOP; an operator reset comes first"
+                : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");
+        }
+
         _levels.MoveTo(RunLevel.Homing, source, "homing from the joint pots");
         _robot.HoldAtMeasured();
         if (_robot.State == RobotState.Enabled)
@@ -232,9 +242,17 @@ public sealed class SafetySupervisor
     /// <summary>The per-cycle checks (the robot's <see cref="BusRobot.AfterUpdate"/>).</summary>
     private void CheckCycle()
     {
+        if (Level == RunLevel.Init)
+        {
+            _lastCycle = 0;
+            return; // motors off and nothing commanded: the checks start with homing
+        }
+
         var now = _time.GetTimestamp();
         var gap = _lastCycle == 0 ? 0 : now - _lastCycle;
-        _lastCycle = now;
+        // Cycles are timed only while the motors hold or follow teleoperation (PEDAL_UP, PEDAL_DOWN): set-up and
+        // homing run the bus at their own pace (first calls, homing moves), with the motors off or firmware-driven.
+        _lastCycle = Level is RunLevel.PedalUp or RunLevel.PedalDown ? now : 0;
         if (gap > _stallTicks)
         {
             Trip(SafetyCheck.DeadlineMiss, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
