@@ -241,7 +241,7 @@ public static class HeadlessRun
             stats.MaxUs,
             meter.RmsMm,
             meter.MaxMm,
-            new BusReport(frames, crc, timeouts, retries),
+            new BusReport(frames, crc, timeouts, retries, bus.Client.LateReplies),
             all,
             SafetyReport.Of(session.Supervisor));
     }

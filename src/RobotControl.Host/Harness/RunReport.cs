@@ -8,7 +8,7 @@ namespace RobotControl.Host.Harness;
 /// <summary>
 /// The outcome of a headless run, written as <c>report.json</c>:
 /// <c>{"duration_s", "ticks", "deadline_misses", "tick_us": {"median", "p99", "max"}, "tracking_error_mm": {"rms",
-/// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries"}, "faults": [...], "interrupted", "stopped_on_fault",
+/// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries", "late_replies"}, "faults": [...], "interrupted", "stopped_on_fault",
 /// "scheduling" (real time), "stop": {"modules", "torque_off", "torque_on", "latched_errors", "unreachable"}}, "safety": {...}}</c>
 /// (<see cref="SafetyReport"/>).
 /// </summary>
@@ -72,6 +72,7 @@ public sealed record RunReport(
             w.WriteNumber("crc_errors", Bus.CrcErrors);
             w.WriteNumber("timeouts", Bus.Timeouts);
             w.WriteNumber("retries", Bus.Retries);
+            w.WriteNumber("late_replies", Bus.LateReplies);
             w.WriteEndObject();
             w.WriteStartArray("faults");
             foreach (var f in Faults)
@@ -126,7 +127,8 @@ public sealed record RunReport(
 /// <param name="CrcErrors">Replies dropped for a bad CRC.</param>
 /// <param name="Timeouts">Replies that did not arrive in time.</param>
 /// <param name="Retries">Requests sent again.</param>
-public sealed record BusReport(long Frames, long CrcErrors, long Timeouts, long Retries);
+/// <param name="LateReplies">Status frames that came after their request was given up on (none taken as a reply).</param>
+public sealed record BusReport(long Frames, long CrcErrors, long Timeouts, long Retries, long LateReplies = 0);
 
 /// <summary>One fault in a run.</summary>
 /// <param name="TimeSeconds">Run time, seconds (when known; otherwise the end of the run).</param>

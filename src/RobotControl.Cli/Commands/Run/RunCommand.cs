@@ -186,7 +186,7 @@ internal sealed class RunCommand : ICliCommand
         output.WriteLine(string.Create(c, $"summary: {r.Ticks} ticks in {r.DurationSeconds:F3} s of loop time, {r.DeadlineMisses} deadline misses"));
         output.WriteLine(string.Create(c, $"  tick time (us): median {r.TickMedianUs:F1}, p99 {r.TickP99Us:F1}, max {r.TickMaxUs:F1}"));
         output.WriteLine(string.Create(c, $"  tracking error (mm): rms {r.TrackingRmsMm:F3}, max {r.TrackingMaxMm:F3}"));
-        output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries"));
+        output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries, {r.Bus.LateReplies} late replies"));
         foreach (var line in r.Safety?.Lines() ?? [])
         {
             output.WriteLine(line);
