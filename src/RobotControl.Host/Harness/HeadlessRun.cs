@@ -32,7 +32,7 @@ public static class HeadlessRun
     {
         ArgumentNullException.ThrowIfNull(options);
         ArgumentNullException.ThrowIfNull(catalog);
-        return options.Virtual ? RunVirtual(options, catalog, progress, null) : RunRealTime(options, catalog, progress);
+        return options.Virtual ? RunVirtual(options, catalog, progress, null) : RunRealTime(options, catalog, progress, null);
     }
 
     /// <summary>A virtual run with measurement hooks (benchmarks): a wrapper around the bus link, and one around each tick.</summary>
@@ -133,7 +133,10 @@ public static class HeadlessRun
         supervisor.PedalDown("harness");
     }
 
-    private static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress)
+    /// <summary>A real-time run with measurement hooks (benchmarks): a wrapper around the bus link, and one call after the run.</summary>
+    internal static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, VirtualRunHooks hooks) => RunRealTime(options, catalog, null, hooks);
+
+    private static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
     {
         if (!options.Inject.IsNone)
         {
@@ -142,7 +145,7 @@ public static class HeadlessRun
 
         TrackingMeter? meter = null;
         using var session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Virtual = false, Transport = options.Transport, SettingOverrides = options.SettingOverrides, Observer = (node, port) => Meter(node, port, out meter) },
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = false, Transport = options.Transport, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
             catalog);
         var bus = session.Robot;
         var loop = session.Loop;
@@ -173,6 +176,7 @@ public static class HeadlessRun
         }
         finally
         {
+            hooks?.AfterRun?.Invoke(session);
             check = session.Stop();
         }
 

@@ -95,7 +95,8 @@ public sealed class RobotSession : IDisposable
                 throw new InvalidOperationException($"the graph's transport is '{transport}': run it with --virtual, or name a serial, usb or tcp transport");
             }
 
-            connection = RobotConnection.OpenReal(LinkFactory.Open(transport), robot);
+            var link = LinkFactory.Open(transport);
+            connection = RobotConnection.OpenReal(options.WrapLink?.Invoke(link, TimeProvider.System) ?? link, robot);
         }
 
         try
