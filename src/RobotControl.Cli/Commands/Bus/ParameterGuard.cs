@@ -7,8 +7,9 @@ namespace RobotControl.Cli.Commands.Bus;
 
 /// <summary>
 /// The checks <c>params set</c> makes before anything is stored (see <see cref="ParameterRules"/>): each value against
-/// the control table, confirmation for the fields that change how the module is reached (<c>baud_rate</c>, <c>id</c>),
-/// and the cross-field rules on the module's table as read from it with the new values applied.
+/// the control table, confirmation for the fields that change how the module is reached (<c>id</c>; <c>baud_rate</c> is
+/// changed on the whole bus by <see cref="BaudChange"/>), and the cross-field rules on the module's table as read from it
+/// with the new values applied.
 /// </summary>
 internal static class ParameterGuard
 {
@@ -30,15 +31,6 @@ internal static class ParameterGuard
             throw new ArgumentException(field.Count == 1
                 ? $"--motor: {field.Name} is one value per module; give --motor 0 (or leave it out)"
                 : $"--motor: {field.Name} has motors 0..{field.Count - 1}");
-        }
-
-        if (field.Name == "baud_rate")
-        {
-            var rate = ModuleParameters.BaudFromCode((int)value);
-            if (rate < RobotControl.Bus.Transports.LinkUri.DefaultBaud)
-            {
-                throw new ArgumentException($"--value: baud_rate {value} ({rate} baud) is below the 1 Mbaud the bus is designed for; use a code from {ModuleParameters.BaudCode(RobotControl.Bus.Transports.LinkUri.DefaultBaud)} ({RobotControl.Bus.Transports.LinkUri.DefaultBaud} baud) up");
-            }
         }
 
         if (Addressing.Contains(field.Name) && !confirmed)
