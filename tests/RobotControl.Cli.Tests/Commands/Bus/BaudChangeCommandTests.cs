@@ -65,12 +65,7 @@ public sealed class BaudChangeCommandTests
         Assert.Contains("at 1000000 baud: no module", scan.Output, StringComparison.Ordinal);
         Assert.Contains("--scan-bauds --yes", scan.Output, StringComparison.Ordinal);
 
-        var back = bus.Run("discover", ["--scan-bauds", "--yes", .. slow]);
-        Assert.True(back.Code == 0, back.Output + back.Error);
-        Assert.Contains("6 of 6 module(s) brought back to 1000000 baud (verified by ping)", back.Output, StringComparison.Ordinal);
-        var normal = bus.Run("discover");
-        Assert.True(normal.Code == 0, normal.Output + normal.Error);
-        Assert.Contains("all 6 modules as configured", normal.Output, StringComparison.Ordinal);
+        AssertBroughtBack(bus, "6 of 6 module(s) brought back to 1000000 baud (verified by ping)", slow);
     }
 
     [Fact]
@@ -88,13 +83,7 @@ public sealed class BaudChangeCommandTests
         Assert.Contains($"to bring it back to 1000000 baud run: robotctl discover {bus.Transport}?baud=1000000 --robot {bus.RobotFile} --scan-bauds --yes", scan.Output, StringComparison.Ordinal);
         Assert.Equal(6, bus.Read(2, "baud_rate", 0, baud: 4_000_000)); // the offer alone changes nothing
 
-        var back = bus.Run("discover", "--scan-bauds", "--yes");
-
-        Assert.True(back.Code == 0, back.Output + back.Error);
-        Assert.Contains("1 of 1 module(s) brought back to 1000000 baud", back.Output, StringComparison.Ordinal);
-        var normal = bus.Run("discover");
-        Assert.True(normal.Code == 0, normal.Output + normal.Error);
-        Assert.Contains("all 6 modules as configured", normal.Output, StringComparison.Ordinal);
+        AssertBroughtBack(bus, "1 of 1 module(s) brought back to 1000000 baud");
     }
 
     [Theory]
@@ -110,4 +99,15 @@ public sealed class BaudChangeCommandTests
     [Fact]
     public void Yes_without_scan_bauds_is_refused() =>
         Cli.AssertRefused(Cli.Run("discover", "virtual:" + Cli.RepoFile("hardware/robots/lb-1.0.json"), "--yes"), "--yes: only with --scan-bauds");
+
+    /// <summary><c>discover --scan-bauds --yes</c> says <paramref name="expected"/>, and a plain discover then finds every module as configured.</summary>
+    private static void AssertBroughtBack(PtyBus bus, string expected, params string[] options)
+    {
+        var back = bus.Run("discover", ["--scan-bauds", "--yes", .. options]);
+        Assert.True(back.Code == 0, back.Output + back.Error);
+        Assert.Contains(expected, back.Output, StringComparison.Ordinal);
+        var normal = bus.Run("discover");
+        Assert.True(normal.Code == 0, normal.Output + normal.Error);
+        Assert.Contains("all 6 modules as configured", normal.Output, StringComparison.Ordinal);
+    }
 }
