@@ -1,6 +1,7 @@
 using System.Globalization;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
+using RobotControl.Hardware.Model;
 using RobotControl.Host.Session;
 using RobotControl.Modules;
 
@@ -66,19 +67,36 @@ internal static class BaudChange
 
         // The host side: its port is re-opened at the new baud (the old one is released first: it holds the device).
         session.Dispose();
-        var silent = Verify(line, baud, ids);
+        return Verify(line, bus.Definition, from, baud, output);
+    }
+
+    /// <summary>
+    /// The host's side of a change from <paramref name="from"/> to <paramref name="baud"/> that the modules were told
+    /// to make: opens the line at the new baud and pings every module of <paramref name="robot"/>. All answer: exit 0.
+    /// Otherwise looks for the silent ones at the old baud and prints where each module is and the command that brings
+    /// them all back to the robot file's baud: exit 1.
+    /// </summary>
+    internal static int Verify(BusLine line, RobotDefinition robot, int from, int baud, TextWriter output)
+    {
+        var ids = robot.Modules.Modules.Select(m => m.Id).ToArray();
+        List<byte> silent;
+        using (var after = line.Open(baud))
+        {
+            silent = ids.Where(id => !after.Client.Ping(id, out _).Succeeded).ToList();
+        }
+
         if (silent.Count == 0)
         {
             output.WriteLine($"baud changed: modules {string.Join(", ", ids)} answer a ping at {baud} baud; use the transport {line.Transport(baud)} from now on");
-            if (bus.Definition.Modules.BaudRate != baud)
+            if (robot.Modules.BaudRate != baud)
             {
-                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"the robot file still says modules.baud = {bus.Definition.Modules.BaudRate}: set it to {baud} (until then discover reports baud_rate as differing)"));
+                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"the robot file still says modules.baud = {robot.Modules.BaudRate}: set it to {baud} (until then discover reports baud_rate as differing)"));
             }
 
             return 0;
         }
 
-        ReportFailure(line, bus.Definition.Modules.BaudRate, from, baud, ids, silent, bus.Controllers.ToDictionary(c => c.Id, c => c.Name), output);
+        ReportFailure(line, robot, from, baud, silent, output);
         return 1;
     }
 
@@ -100,14 +118,7 @@ internal static class BaudChange
         }
     }
 
-    /// <summary>Opens the line at <paramref name="baud"/> and pings every module; returns the ones that do not answer.</summary>
-    private static List<byte> Verify(BusLine line, int baud, byte[] ids)
-    {
-        using var after = line.Open(baud);
-        return ids.Where(id => !after.Client.Ping(id, out _).Succeeded).ToList();
-    }
-
-    private static void ReportFailure(BusLine line, int fileBaud, int from, int baud, byte[] ids, List<byte> silent, Dictionary<byte, string> names, TextWriter output)
+    private static void ReportFailure(BusLine line, RobotDefinition robot, int from, int baud, List<byte> silent, TextWriter output)
     {
         List<byte> stayed;
         using (var old = line.Open(from))
@@ -115,19 +126,19 @@ internal static class BaudChange
             stayed = silent.Where(id => old.Client.Ping(id, out _).Succeeded).ToList();
         }
 
-        var moved = ids.Except(silent).ToArray();
+        var moved = robot.Modules.Modules.Select(m => m.Id).Except(silent).ToArray();
         if (moved.Length > 0)
         {
             output.WriteLine($"modules {string.Join(", ", moved)} answer at {baud} baud");
         }
 
-        foreach (var id in silent)
+        foreach (var module in robot.Modules.Modules.Where(m => silent.Contains(m.Id)))
         {
-            output.WriteLine(stayed.Contains(id)
-                ? $"NOT CHANGED module {id} \"{names[id]}\": still answers at {from} baud, not at {baud}"
-                : $"LOST        module {id} \"{names[id]}\": answers neither at {from} nor at {baud} baud");
+            output.WriteLine(stayed.Contains(module.Id)
+                ? $"NOT CHANGED module {module.Id} \"{module.Name}\": still answers at {from} baud, not at {baud}"
+                : $"LOST        module {module.Id} \"{module.Name}\": answers neither at {from} nor at {baud} baud");
         }
 
-        output.WriteLine($"the bus is split; to bring every module to the robot file's {fileBaud} baud run: robotctl discover {line.Transport(fileBaud)} --robot {line.RobotFile} --scan-bauds --yes");
+        output.WriteLine($"the bus is split; to bring every module to the robot file's {robot.Modules.BaudRate} baud run: robotctl discover {line.Transport(robot.Modules.BaudRate)} --robot {line.RobotFile} --scan-bauds --yes");
     }
 }

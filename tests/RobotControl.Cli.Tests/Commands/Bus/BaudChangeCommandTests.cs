@@ -1,3 +1,7 @@
+using RobotControl.Bus.Client;
+using RobotControl.Cli.Commands.Bus;
+using RobotControl.Hardware.Loading;
+
 namespace RobotControl.Cli.Tests.Commands.Bus;
 
 /// <summary>
@@ -84,6 +88,32 @@ public sealed class BaudChangeCommandTests
         Assert.Equal(6, bus.Read(2, "baud_rate", 0, baud: 4_000_000)); // the offer alone changes nothing
 
         AssertBroughtBack(bus, "1 of 1 module(s) brought back to 1000000 baud");
+    }
+
+    [Fact]
+    public void A_module_that_did_not_follow_is_named_with_where_it_is_and_the_printed_command_brings_the_bus_back()
+    {
+        using var bus = new PtyBus();
+        foreach (var id in Ids.Where(id => id != 12))
+        {
+            bus.Write(id, "baud_rate", 4); // as if module 12 had missed the ACTION of a change to 2 Mbaud
+        }
+
+        var line = new BusLine(bus.Transport, bus.RobotFile, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(100) });
+        var output = new StringWriter();
+
+        var code = BaudChange.Verify(line, RobotLoader.Load(bus.RobotFile), 1_000_000, 2_000_000, output);
+
+        var text = output.ToString();
+        Assert.Equal(1, code);
+        Assert.Contains("modules 1, 2, 3, 11, 13 answer at 2000000 baud", text, StringComparison.Ordinal);
+        Assert.Contains("NOT CHANGED module 12 \"left upper arm\": still answers at 1000000 baud, not at 2000000", text, StringComparison.Ordinal);
+        var command = text.Split('\n').Single(l => l.StartsWith("the bus is split", StringComparison.Ordinal));
+        var args = command[(command.IndexOf("robotctl ", StringComparison.Ordinal) + "robotctl ".Length)..].Trim().Split(' ');
+        var back = Cli.Run([.. args, "--margin-ms", "100"]);
+        Assert.True(back.Code == 0, back.Output + back.Error);
+        Assert.Contains("5 of 5 module(s) brought back to 1000000 baud", back.Output, StringComparison.Ordinal);
+        Assert.Equal(0, bus.Run("discover").Code);
     }
 
     [Theory]
