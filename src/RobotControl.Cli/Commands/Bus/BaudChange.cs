@@ -48,16 +48,16 @@ internal static class BaudChange
             throw new ArgumentException($"--yes: this writes baud_rate {code} ({baud} baud) into all {ids.Length} modules of {bus.Definition.Name} (motors off), then re-opens {session.Client.Link.Description} at {baud} baud and pings every module; add --yes to do it (nothing was written)");
         }
 
-        if (baud == from)
-        {
-            output.WriteLine($"the bus already runs at {baud} baud (baud_rate {code}); nothing was written");
-            return 0;
-        }
-
         var report = bus.Discover();
         if (!report.AllAsConfigured)
         {
             throw new IOException($"the bus at {from} baud is not as the robot file says ({string.Join("; ", report.Problems.Select(p => p.Line.Trim()))}); a baud change must reach every module at once, so nothing was written (find the others with robotctl discover --scan-bauds)");
+        }
+
+        if (baud == from)
+        {
+            output.WriteLine($"every module already answers at {baud} baud (baud_rate {code}); nothing was written");
+            return 0;
         }
 
         bus.EnableTorque(false);

@@ -52,7 +52,14 @@ internal sealed class BusLine
         }
     }
 
-    /// <summary>Opens the line at <paramref name="baud"/> (with the robot file, if any); <paramref name="discoveryWindow"/> overrides the client's.</summary>
-    public RobotConnection Open(int baud, TimeSpan? discoveryWindow = null) =>
-        RobotConnection.Open(Transport(baud), RobotFile, discoveryWindow is { } w ? Options with { DiscoveryWindow = w } : Options);
+    /// <summary>
+    /// Opens the line at <paramref name="baud"/> (with the robot file, if any); <paramref name="discoveryWindow"/>
+    /// overrides the client's. Bytes left in the port's input from before (late replies at the previous baud) are dropped.
+    /// </summary>
+    public RobotConnection Open(int baud, TimeSpan? discoveryWindow = null)
+    {
+        var connection = RobotConnection.Open(Transport(baud), RobotFile, discoveryWindow is { } w ? Options with { DiscoveryWindow = w } : Options);
+        connection.Client.Link.DiscardInput();
+        return connection;
+    }
 }
