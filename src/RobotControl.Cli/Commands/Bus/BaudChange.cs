@@ -20,7 +20,7 @@ internal static class BaudChange
     /// <summary>Runs the change on <paramref name="session"/> (opened at the present baud); returns the exit code.</summary>
     /// <exception cref="ArgumentException">The code, an option or the transport is wrong, or it is not confirmed (nothing was written).</exception>
     /// <exception cref="IOException">The bus is not as the robot file says, or a module refused (nothing changed).</exception>
-    public static int Run(RobotConnection session, BusLine line, long code, bool moduleGiven, bool confirmed, TextWriter output)
+    public static int Run(RobotConnection session, BusLine line, long code, (bool Module, int Motor) given, bool confirmed, TextWriter output)
     {
         var field = ControlTable.Firmware["baud_rate"];
         if (ParameterRules.CheckValue(field, code) is { } problem)
@@ -34,9 +34,14 @@ internal static class BaudChange
             throw new ArgumentException($"--value: the control table names no bit rate for baud_rate code {code}; nothing was written");
         }
 
-        if (moduleGiven)
+        if (given.Module)
         {
             throw new ArgumentException("--module: baud_rate is changed in every module of the bus at once (a bus runs at one baud); leave --module out");
+        }
+
+        if (given.Motor != 0)
+        {
+            throw new ArgumentException("--motor: baud_rate is one value per module; leave --motor out");
         }
 
         line.RequireBaudSwitchable("--field baud_rate");

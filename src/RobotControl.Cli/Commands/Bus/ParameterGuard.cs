@@ -13,9 +13,6 @@ namespace RobotControl.Cli.Commands.Bus;
 /// </summary>
 internal static class ParameterGuard
 {
-    /// <summary>Fields whose change makes the module answer elsewhere: they need <c>--yes</c>.</summary>
-    private static readonly string[] Addressing = ["baud_rate", "id"];
-
     /// <summary>Checks one write; throws with the reason when it must not happen.</summary>
     /// <exception cref="ArgumentException">The value, field, motor or confirmation is wrong.</exception>
     /// <exception cref="IOException">The module does not answer.</exception>
@@ -33,9 +30,10 @@ internal static class ParameterGuard
                 : $"--motor: {field.Name} has motors 0..{field.Count - 1}");
         }
 
-        if (Addressing.Contains(field.Name) && !confirmed)
+        // A new ID makes the module answer elsewhere (a baud change never comes here: BaudChange moves the whole bus).
+        if (field.Name == "id" && !confirmed)
         {
-            throw new ArgumentException($"--field {field.Name}: the module will answer only at the new {(field.Name == "id" ? "ID" : "baud rate")} after this write; add --yes to confirm");
+            throw new ArgumentException("--field id: the module will answer only at the new ID after this write; add --yes to confirm");
         }
 
         if (client.Ping(id, out _).Outcome != ReplyOutcome.Ok)

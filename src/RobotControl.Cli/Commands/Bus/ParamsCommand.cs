@@ -108,7 +108,7 @@ internal sealed class ParamsCommand : ICliCommand
 
                 if (parse.GetValue(field) == "baud_rate" && parse.GetValue(value) is { } code)
                 {
-                    return BaudChange.Run(session, busOptions.Line(parse), code, parse.GetValue(module) is not null, parse.GetValue(yes), output);
+                    return BaudChange.Run(session, busOptions.Line(parse), code, (parse.GetValue(module) is not null, parse.GetValue(motor)), parse.GetValue(yes), output);
                 }
 
                 if (parse.GetValue(module) is not { } id || parse.GetValue(field) is not { } name || parse.GetValue(value) is not { } v)

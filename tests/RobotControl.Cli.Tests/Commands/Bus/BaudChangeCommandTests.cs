@@ -27,6 +27,15 @@ public sealed class BaudChangeCommandTests
     }
 
     [Fact]
+    public void A_motor_given_with_the_baud_is_refused()
+    {
+        using var bus = new PtyBus();
+
+        Cli.AssertRefused(bus.Run("params set", "--field", "baud_rate", "--value", "4", "--motor", "1", "--yes"), "--motor: baud_rate is one value per module");
+        Assert.Equal(3, bus.Read(1, "baud_rate", 0));
+    }
+
+    [Fact]
     public void A_change_to_the_baud_every_module_already_answers_at_writes_nothing()
     {
         using var bus = new PtyBus();

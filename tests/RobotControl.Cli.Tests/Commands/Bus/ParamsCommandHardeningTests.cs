@@ -17,6 +17,7 @@ public sealed class ParamsCommandHardeningTests
     [InlineData("pot_cal_raw3", 0, "0", "strictly increasing or strictly decreasing")]
     [InlineData("baud_rate", 0, "8", "outside its range 0..7")]
     [InlineData("baud_rate", 0, "4", "leave --module out")]
+    [InlineData("id", 0, "9", "add --yes to confirm")]
     public void A_value_outside_the_control_table_or_its_rules_is_refused_and_not_stored(string field, int motor, string value, string expected)
     {
         using var bus = new PtyBus();
