@@ -18,13 +18,19 @@ public sealed record SafetyLimits
     /// <summary>How long the current may stay over its limit, ms (default 50, as the dVRK's current check).</summary>
     public double OverCurrentMs { get; init; } = 50;
 
+    /// <summary>Largest |pot position − encoder position| of a motor, output radians (default 0.087 rad, 5°, as the dVRK's check).</summary>
+    public double PotDistanceRad { get; init; } = 5 * Math.PI / 180;
+
+    /// <summary>How long the pot and the encoder may disagree, ms (default 10, as the dVRK's check).</summary>
+    public double PotMismatchMs { get; init; } = 10;
+
     /// <summary>How long a module may stay silent, ms (default 10).</summary>
     public double ModuleSilentMs { get; init; } = 10;
 
     /// <summary>Loop periods without a cycle that count as a stall (k consecutive deadline misses; default 10).</summary>
     public int DeadlineMissesInARow { get; init; } = 10;
 
-    /// <summary>Safe state per check (defaults: hold for soft trips; torque off for a silent module, over-current and module faults).</summary>
+    /// <summary>Safe state per check (defaults: hold for soft trips; torque off for a silent module, over-current, a pot/encoder mismatch and module faults).</summary>
     public IReadOnlyDictionary<SafetyCheck, SafeState> SafeStates { get; init; } = DefaultSafeStates;
 
     /// <summary>The defaults of <see cref="SafeStates"/>.</summary>
@@ -34,6 +40,7 @@ public sealed record SafetyLimits
         [SafetyCheck.ModuleSilent] = SafeState.TorqueOff,
         [SafetyCheck.TrackingError] = SafeState.Hold,
         [SafetyCheck.OverCurrent] = SafeState.TorqueOff,
+        [SafetyCheck.PotMismatch] = SafeState.TorqueOff,
         [SafetyCheck.DeadlineMiss] = SafeState.Hold,
         [SafetyCheck.ModuleFault] = SafeState.TorqueOff,
         [SafetyCheck.Operator] = SafeState.Hold,

@@ -7,14 +7,15 @@ namespace RobotControl.Host.Safety;
 /// defaults. Example:
 /// <code>
 /// "safety": { "tracking_error_rad": 0.35, "tracking_error_ms": 50, "current_limit_fraction": 0.95,
-///             "over_current_ms": 50, "module_silent_ms": 10, "deadline_misses_in_a_row": 10,
+///             "over_current_ms": 50, "pot_distance_rad": 0.087, "pot_mismatch_ms": 10,
+///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10,
 ///             "safe_state": { "tracking_error": "hold", "over_current": "torque_off" } }
 /// </code>
 /// </summary>
 public static class SafetySection
 {
     private static readonly string[] Fields =
-        ["tracking_error_rad", "tracking_error_ms", "current_limit_fraction", "over_current_ms", "module_silent_ms", "deadline_misses_in_a_row", "safe_state"];
+        ["tracking_error_rad", "tracking_error_ms", "current_limit_fraction", "over_current_ms", "pot_distance_rad", "pot_mismatch_ms", "module_silent_ms", "deadline_misses_in_a_row", "safe_state"];
 
     /// <summary>Reads the <c>safety</c> section of the robot file at <paramref name="path"/> (defaults without one).</summary>
     /// <exception cref="FormatException">A field is unknown, of the wrong type or out of range (one line naming the file and field).</exception>
@@ -49,6 +50,8 @@ public static class SafetySection
             TrackingErrorMs = Number(section, "tracking_error_ms", d.TrackingErrorMs, 0, 10_000, file),
             CurrentLimitFraction = Number(section, "current_limit_fraction", d.CurrentLimitFraction, 0.05, 2, file),
             OverCurrentMs = Number(section, "over_current_ms", d.OverCurrentMs, 0, 10_000, file),
+            PotDistanceRad = Number(section, "pot_distance_rad", d.PotDistanceRad, 1e-6, 2 * Math.PI, file),
+            PotMismatchMs = Number(section, "pot_mismatch_ms", d.PotMismatchMs, 0, 10_000, file),
             ModuleSilentMs = Number(section, "module_silent_ms", d.ModuleSilentMs, 0, 10_000, file),
             DeadlineMissesInARow = (int)Number(section, "deadline_misses_in_a_row", d.DeadlineMissesInARow, 1, 100_000, file, integer: true),
             SafeStates = SafeStates(section, file),
