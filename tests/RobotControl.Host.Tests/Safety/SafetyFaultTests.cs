@@ -109,6 +109,7 @@ public sealed class SafetyFaultTests
         Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven"));
         Assert.True(run.GoalsFrozenFrom(trip.TimeSeconds + 0.1), "goals moved after the hold settled");
         Assert.All(run.Motors, m => Assert.InRange(Math.Abs(m.OutputRad - m.GoalRad), 0, 0.05));
+        Assert.Equal(1500, run.Report.Ticks); // the run went on at E_STOP: 0.5 s of ticks with no haptic force
         AssertCommon(run, "non_finite");
     }
 
@@ -135,6 +136,7 @@ public sealed class SafetyFaultTests
         Assert.Equal(0, run.Safety.StepCapHits);
         Assert.Equal(RunLevel.PedalDown, run.FinalLevel);
         Assert.Equal(20000, run.Report.Ticks);
+        Assert.True(run.LastForceS > 19.9, $"the haptic handles rendered no force after {run.LastForceS} s of teleoperation");
         Assert.Equal(0, run.Report.DeadlineMisses);
         // The main job's figures with the supervisor in the loop: the same as `robotctl run graphs/teleop-lb.json
         // --virtual --duration 20s` without it (0.6806 / 1.575 mm since the cycle polls the joint pots every 16 cycles,
@@ -152,6 +154,9 @@ public sealed class SafetyFaultTests
         Assert.Equal(RunLevel.PedalDown, run.Safety.RunLevels[^1].From);
         Assert.True(run.Spy.Frames.Count > 100);
         Assert.InRange(run.WorstStepOverCap(), 0, 1);
+        // No haptic force from the tick after the trip's cycle on (robot.teleop_enabled -> touch.force_enable, a
+        // delayed wire); the no-fault run shows that forces are rendered while teleoperating.
+        Assert.True(run.LastForceS <= run.Safety.Trips[0].TimeSeconds + 0.002, $"haptic force rendered at {run.LastForceS} s, after the trip");
         var json = run.Report.ToJson();
         Assert.Contains("\"final_run_level\": \"E_STOP\"", json, StringComparison.Ordinal);
         Assert.Contains($"\"check\": \"{check}\"", json, StringComparison.Ordinal);
