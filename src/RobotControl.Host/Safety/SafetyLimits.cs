@@ -30,6 +30,15 @@ public sealed record SafetyLimits
     /// <summary>Loop periods without a cycle that count as a stall (k consecutive deadline misses; default 10).</summary>
     public int DeadlineMissesInARow { get; init; } = 10;
 
+    /// <summary>Per-motor thresholds that override the robot-wide ones, by motor name (<c>arm.motor</c>, e.g. <c>right.elbow</c>).</summary>
+    public IReadOnlyDictionary<string, MotorSafetyLimits> Motors { get; init; } = new Dictionary<string, MotorSafetyLimits>();
+
+    /// <summary>The tracking-error limit of motor <paramref name="motor"/> (its own, else <see cref="TrackingErrorRad"/>).</summary>
+    public double TrackingErrorRadOf(string motor) => Motors.TryGetValue(motor, out var m) && m.TrackingErrorRad is { } v ? v : TrackingErrorRad;
+
+    /// <summary>The pot/encoder distance limit of motor <paramref name="motor"/> (its own, else <see cref="PotDistanceRad"/>).</summary>
+    public double PotDistanceRadOf(string motor) => Motors.TryGetValue(motor, out var m) && m.PotDistanceRad is { } v ? v : PotDistanceRad;
+
     /// <summary>Safe state per check (defaults: hold for soft trips; torque off for a silent module, over-current, a pot/encoder mismatch and module faults).</summary>
     public IReadOnlyDictionary<SafetyCheck, SafeState> SafeStates { get; init; } = DefaultSafeStates;
 
@@ -49,3 +58,8 @@ public sealed record SafetyLimits
     /// <summary>The safe state of <paramref name="check"/>.</summary>
     public SafeState SafeStateOf(SafetyCheck check) => SafeStates.TryGetValue(check, out var s) ? s : DefaultSafeStates[check];
 }
+
+/// <summary>A motor's own thresholds (null: the robot-wide one).</summary>
+/// <param name="TrackingErrorRad">Largest |goal sent − measured position|, output radians.</param>
+/// <param name="PotDistanceRad">Largest |pot position − encoder position|, output radians.</param>
+public sealed record MotorSafetyLimits(double? TrackingErrorRad, double? PotDistanceRad);

@@ -30,6 +30,8 @@ public sealed class SafetySupervisor
     private readonly long[] _trackingSince;
     private readonly long[] _currentSince;
     private readonly long[] _potSince;
+    private readonly double[] _trackingLimit;
+    private readonly double[] _potLimit;
     private readonly long[] _answeredAt;
     private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
     private readonly long _trackingTicks;
@@ -62,6 +64,8 @@ public sealed class SafetySupervisor
         _trackingSince = new long[_motors.Length];
         _currentSince = new long[_motors.Length];
         _potSince = new long[_motors.Length];
+        _trackingLimit = [.. _motorNames.Select(limits.TrackingErrorRadOf)];
+        _potLimit = [.. _motorNames.Select(limits.PotDistanceRadOf)];
         _answeredAt = new long[_controllers.Length];
         var f = _time.TimestampFrequency;
         _trackingTicks = (long)(limits.TrackingErrorMs * 1e-3 * f);
@@ -310,14 +314,14 @@ public sealed class SafetySupervisor
         }
 
         var error = Math.Abs(_robot.SentGoalRad(m) - position);
-        Persist(ref _trackingSince[i], driven && error > Limits.TrackingErrorRad, now, _trackingTicks, SafetyCheck.TrackingError, i, error, Limits.TrackingErrorRad, "rad");
+        Persist(ref _trackingSince[i], driven && error > _trackingLimit[i], now, _trackingTicks, SafetyCheck.TrackingError, i, error, _trackingLimit[i], "rad");
         var limit = Limits.CurrentLimitFraction * m.CurrentLimitA;
         Persist(ref _currentSince[i], Math.Abs(current) > limit, now, _currentTicks, SafetyCheck.OverCurrent, i, Math.Abs(current), limit, "A");
 
         // Pot against encoder once the positions are trusted (after homing); the pot is read at the pot poll's rate.
         var pot = m.PotPositionRad;
         var distance = Math.Abs(pot - position);
-        Persist(ref _potSince[i], homed && double.IsFinite(pot) && distance > Limits.PotDistanceRad, now, _potTicks, SafetyCheck.PotMismatch, i, distance, Limits.PotDistanceRad, "rad");
+        Persist(ref _potSince[i], homed && double.IsFinite(pot) && distance > _potLimit[i], now, _potTicks, SafetyCheck.PotMismatch, i, distance, _potLimit[i], "rad");
     }
 
     private void Persist(ref long since, bool beyond, long now, long allowed, SafetyCheck check, int motor, double measured, double limit, string unit)

@@ -54,17 +54,7 @@ public sealed class SafetyFaultTests
         var dir = Directory.CreateTempSubdirectory("safety-");
         try
         {
-            var source = Graphs.Path("teleop-lb.json");
-            var robotPath = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(source)!, "../hardware/robots/lb-1.0.json"));
-            var components = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(robotPath)!, "../components")).Replace('\\', '/');
-            var robot = File.ReadAllText(robotPath).Replace("\"../components/", $"\"{components}/", StringComparison.Ordinal).TrimEnd();
-            robot = robot[..robot.LastIndexOf('}')] + ", \"safety\": { \"tracking_error_rad\": 0.05, \"tracking_error_ms\": 20, \"current_limit_fraction\": 2 } }";
-            File.WriteAllText(Path.Combine(dir.FullName, "lb.json"), robot);
-            var graph = Path.Combine(dir.FullName, "teleop.json");
-            File.WriteAllText(graph, File.ReadAllText(source)
-                .Replace("\"../hardware/robots/lb-1.0.json\"", "\"lb.json\"", StringComparison.Ordinal)
-                .Replace("\"trajectories/", $"\"{Path.GetDirectoryName(source)!.Replace('\\', '/')}/trajectories/", StringComparison.Ordinal));
-
+            var graph = SafetyRun.GraphWithSafetySection(dir.FullName, "{ \"tracking_error_rad\": 0.05, \"tracking_error_ms\": 20, \"current_limit_fraction\": 2 }");
             var run = SafetyRun.Of("stuck=right.elbow@1s", 1.5, graph);
             var trip = run.Trip(SafetyCheck.TrackingError);
             Assert.Equal("right.elbow", trip.Joint);
@@ -96,6 +86,25 @@ public sealed class SafetyFaultTests
         Assert.Equal(SafetyCheck.PotMismatch, run.Safety.Trips[0].Check);
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
         AssertCommon(run, "pot_mismatch");
+    }
+
+    [Fact]
+    public void A_motor_s_own_pot_distance_in_the_robot_file_replaces_the_robot_wide_one()
+    {
+        // The elbow's pot fails at 1 s (it then reads its -10 deg end, 100 deg from the joint): a limit of 2 rad for
+        // that motor alone lets it pass, while the robot-wide 5 deg still guards every other motor.
+        var dir = Directory.CreateTempSubdirectory("safety-");
+        try
+        {
+            var graph = SafetyRun.GraphWithSafetySection(dir.FullName, "{ \"motors\": { \"right.elbow\": { \"pot_distance_rad\": 2 } } }");
+            var relaxed = SafetyRun.Of("pot=right.elbow@1s", 1.3, graph);
+            Assert.Empty(relaxed.Safety.Trips);
+            Assert.Equal(RunLevel.PedalDown, relaxed.FinalLevel);
+        }
+        finally
+        {
+            dir.Delete(recursive: true);
+        }
     }
 
     [Fact]

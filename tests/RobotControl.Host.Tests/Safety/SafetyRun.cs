@@ -77,6 +77,25 @@ internal sealed class SafetyRun
         return new SafetyRun(report, spy!, origin, level, motors, lastForceS);
     }
 
+    /// <summary>
+    /// Writes into <paramref name="dir"/> the shipped teleop graph on a copy of its robot file with
+    /// <paramref name="safety"/> as its <c>safety</c> section; returns the graph's path.
+    /// </summary>
+    public static string GraphWithSafetySection(string dir, string safety)
+    {
+        var source = Graphs.Path("teleop-lb.json");
+        var robotPath = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(source)!, "../hardware/robots/lb-1.0.json"));
+        var components = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(robotPath)!, "../components")).Replace('\\', '/');
+        var robot = File.ReadAllText(robotPath).Replace("\"../components/", $"\"{components}/", StringComparison.Ordinal).TrimEnd();
+        robot = robot[..robot.LastIndexOf('}')] + $", \"safety\": {safety} }}";
+        File.WriteAllText(Path.Combine(dir, "lb.json"), robot);
+        var graph = Path.Combine(dir, "teleop.json");
+        File.WriteAllText(graph, File.ReadAllText(source)
+            .Replace("\"../hardware/robots/lb-1.0.json\"", "\"lb.json\"", StringComparison.Ordinal)
+            .Replace("\"trajectories/", $"\"{Path.GetDirectoryName(source)!.Replace('\\', '/')}/trajectories/", StringComparison.Ordinal));
+        return graph;
+    }
+
     /// <summary>The first trip of <paramref name="check"/> (fails the test if none).</summary>
     public SafetyReport.TripEntry Trip(SafetyCheck check) =>
         Safety.Trips.FirstOrDefault(t => t.Check == check) ?? throw new Xunit.Sdk.XunitException($"no {check.Name()} trip; trips: {string.Join("; ", Safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds}"))}");
