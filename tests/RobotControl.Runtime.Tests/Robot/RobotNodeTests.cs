@@ -45,6 +45,31 @@ public sealed class RobotNodeTests
     }
 
     [Fact]
+    public void Teleop_enabled_follows_the_port_s_run_level_and_drops_when_an_upstream_plugin_faults()
+    {
+        var port = new KinematicRobotPort(Repo.Lb);
+        var node = new RobotNode(Repo.Lb, TimeProvider.System, Repo.Root);
+        node.Attach(port);
+        var graph = new PluginGraph();
+        graph.Add(node);
+        graph.Add(new ElbowSource(throwAt: 10));
+        graph.Connect("src.elbow", "robot.right.elbow");
+        var program = graph.Compile();
+
+        program.Start(Ticks.At(0));
+        var seen = new double[12];
+        for (var i = 0; i < seen.Length; i++)
+        {
+            port.TeleopAllowed = i is not (3 or 4); // e.g. a trip at tick 3, reset before tick 5
+            program.Tick(Ticks.At(i));
+            seen[i] = node.GetOutput("teleop_enabled");
+        }
+
+        // The source faults at tick 10: the robot holds, and teleoperation stays off.
+        Assert.Equal([1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 0, 0], seen);
+    }
+
+    [Fact]
     public void When_an_upstream_plugin_faults_the_robot_holds_position_and_is_sent_nothing_more()
     {
         var port = new KinematicRobotPort(Repo.Lb);
