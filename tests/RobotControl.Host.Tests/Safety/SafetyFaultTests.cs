@@ -10,14 +10,8 @@ public sealed class SafetyFaultTests
     [Fact]
     public void A_current_spike_trips_over_current_within_its_time_and_turns_the_torque_off()
     {
-        var run = SafetyRun.Of("current=right.elbow@1s", 1.3);
-        var trip = run.Trip(SafetyCheck.OverCurrent);
-        Assert.Equal("right.elbow", trip.Joint);
-        Assert.True(trip.Measured > trip.Limit);
-        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.050, 0.062); // 50 ms persistence + the cycles until the sensor is read (60.5 ms measured)
-        Assert.Equal(SafeState.TorqueOff, trip.Action);
-        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
-        AssertCommon(run, "over_current");
+        // 50 ms persistence + the cycles until the sensor is read (60.5 ms measured)
+        AssertTorqueOffTrip("current=right.elbow@1s", SafetyCheck.OverCurrent, "right.elbow", 0.050, 0.062);
     }
 
     [Fact]
@@ -51,41 +45,26 @@ public sealed class SafetyFaultTests
     public void With_the_current_check_relaxed_in_the_robot_file_a_stuck_joint_trips_tracking_error_and_holds()
     {
         // The teleop graph on a copy of the robot file whose safety section relaxes the current check and tightens tracking.
-        var dir = Directory.CreateTempSubdirectory("safety-");
-        try
-        {
-            var graph = SafetyRun.GraphWithSafetySection(dir.FullName, "{ \"tracking_error_rad\": 0.05, \"tracking_error_ms\": 20, \"current_limit_fraction\": 2 }");
-            var run = SafetyRun.Of("stuck=right.elbow@1s", 1.5, graph);
-            var trip = run.Trip(SafetyCheck.TrackingError);
-            Assert.Equal("right.elbow", trip.Joint);
-            Assert.Equal(0.05, trip.Limit);
-            Assert.InRange(trip.TimeSeconds - FaultAtS, 0.020, 0.400); // 376 ms measured: the error first grows past 0.05 rad at the graph's speed, then persists 20 ms
-            Assert.True(trip.Measured > 0.05);
-            Assert.DoesNotContain(run.Safety.Trips, t => t.Check == SafetyCheck.OverCurrent);
-            Assert.Equal(SafeState.Hold, trip.Action);
-            Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven"));
-            Assert.True(run.GoalsFrozenFrom(trip.TimeSeconds + 0.1), "goals moved after the hold settled");
-            AssertCommon(run, "tracking_error");
-        }
-        finally
-        {
-            dir.Delete(recursive: true);
-        }
+        var run = SafetyRun.WithSafetySection("{ \"tracking_error_rad\": 0.05, \"tracking_error_ms\": 20, \"current_limit_fraction\": 2 }", "stuck=right.elbow@1s", 1.5);
+        var trip = run.Trip(SafetyCheck.TrackingError);
+        Assert.Equal("right.elbow", trip.Joint);
+        Assert.Equal(0.05, trip.Limit);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.020, 0.400); // 376 ms measured: the error first grows past 0.05 rad at the graph's speed, then persists 20 ms
+        Assert.True(trip.Measured > 0.05);
+        Assert.DoesNotContain(run.Safety.Trips, t => t.Check == SafetyCheck.OverCurrent);
+        Assert.Equal(SafeState.Hold, trip.Action);
+        Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven"));
+        Assert.True(run.GoalsFrozenFrom(trip.TimeSeconds + 0.1), "goals moved after the hold settled");
+        AssertCommon(run, "tracking_error");
     }
 
     [Fact]
     public void A_failed_pot_trips_pot_mismatch_within_the_pot_poll_and_its_persistence_and_turns_the_torque_off()
     {
-        var run = SafetyRun.Of("pot=right.elbow@1s", 1.3);
-        var trip = run.Trip(SafetyCheck.PotMismatch);
-        Assert.Equal("right.elbow", trip.Joint);
-        Assert.True(trip.Measured > trip.Limit);
+        // 10 ms persistence + up to one pot poll (16 bus cycles): 18.6 ms measured
+        var (run, trip) = AssertTorqueOffTrip("pot=right.elbow@1s", SafetyCheck.PotMismatch, "right.elbow", 0.010, 0.030);
         Assert.Equal(5 * Math.PI / 180, trip.Limit, 9);
-        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.010, 0.030); // 10 ms persistence + up to one pot poll (16 bus cycles): 18.6 ms measured
-        Assert.Equal(SafeState.TorqueOff, trip.Action);
         Assert.Equal(SafetyCheck.PotMismatch, run.Safety.Trips[0].Check);
-        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
-        AssertCommon(run, "pot_mismatch");
     }
 
     [Fact]
@@ -93,18 +72,9 @@ public sealed class SafetyFaultTests
     {
         // The elbow's pot fails at 1 s (it then reads its -10 deg end, 100 deg from the joint): a limit of 2 rad for
         // that motor alone lets it pass, while the robot-wide 5 deg still guards every other motor.
-        var dir = Directory.CreateTempSubdirectory("safety-");
-        try
-        {
-            var graph = SafetyRun.GraphWithSafetySection(dir.FullName, "{ \"motors\": { \"right.elbow\": { \"pot_distance_rad\": 2 } } }");
-            var relaxed = SafetyRun.Of("pot=right.elbow@1s", 1.3, graph);
-            Assert.Empty(relaxed.Safety.Trips);
-            Assert.Equal(RunLevel.PedalDown, relaxed.FinalLevel);
-        }
-        finally
-        {
-            dir.Delete(recursive: true);
-        }
+        var relaxed = SafetyRun.WithSafetySection("{ \"motors\": { \"right.elbow\": { \"pot_distance_rad\": 2 } } }", "pot=right.elbow@1s", 1.3);
+        Assert.Empty(relaxed.Safety.Trips);
+        Assert.Equal(RunLevel.PedalDown, relaxed.FinalLevel);
     }
 
     [Fact]
@@ -153,6 +123,20 @@ public sealed class SafetyFaultTests
         Assert.Equal(0.6806, Math.Round(run.Report.TrackingRmsMm, 4));
         Assert.Equal(1.575, Math.Round(run.Report.TrackingMaxMm, 3));
         Assert.InRange(run.WorstStepOverCap(), 0, 1);
+    }
+
+    /// <summary>A 1.3 s run with <paramref name="inject"/> trips <paramref name="check"/> on <paramref name="joint"/> within [<paramref name="minS"/>, <paramref name="maxS"/>] of the fault, over its limit, with every motor off.</summary>
+    private static (SafetyRun Run, SafetyReport.TripEntry Trip) AssertTorqueOffTrip(string inject, SafetyCheck check, string joint, double minS, double maxS)
+    {
+        var run = SafetyRun.Of(inject, 1.3);
+        var trip = run.Trip(check);
+        Assert.Equal(joint, trip.Joint);
+        Assert.True(trip.Measured > trip.Limit);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, minS, maxS);
+        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
+        AssertCommon(run, check.Name());
+        return (run, trip);
     }
 
     /// <summary>E-STOP at the end, no frame over the step cap, and the report names the trip.</summary>

@@ -77,11 +77,25 @@ internal sealed class SafetyRun
         return new SafetyRun(report, spy!, origin, level, motors, lastForceS);
     }
 
+    /// <summary>A run of the shipped teleop graph on a copy of its robot file with <paramref name="safety"/> as its <c>safety</c> section.</summary>
+    public static SafetyRun WithSafetySection(string safety, string inject, double seconds)
+    {
+        var dir = Directory.CreateTempSubdirectory("safety-");
+        try
+        {
+            return Of(inject, seconds, GraphWithSafetySection(dir.FullName, safety));
+        }
+        finally
+        {
+            dir.Delete(recursive: true);
+        }
+    }
+
     /// <summary>
     /// Writes into <paramref name="dir"/> the shipped teleop graph on a copy of its robot file with
     /// <paramref name="safety"/> as its <c>safety</c> section; returns the graph's path.
     /// </summary>
-    public static string GraphWithSafetySection(string dir, string safety)
+    private static string GraphWithSafetySection(string dir, string safety)
     {
         var source = Graphs.Path("teleop-lb.json");
         var robotPath = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(source)!, "../hardware/robots/lb-1.0.json"));
