@@ -1,6 +1,7 @@
 using RobotControl.Modules;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
+using RobotControl.Host.Safety;
 using RobotControl.Robot.Bus;
 using RobotControl.WebConsole.Session;
 
@@ -12,17 +13,16 @@ public sealed partial class HeadlessSession
     /// <summary>The longest friendly name.</summary>
     private const int MaxNameLength = 40;
 
-    /// <summary>Status error bytes of the protocol, in words (docs/protocol.md, "Status error byte").</summary>
-    private static readonly string[] StatusErrors =
-    [
-        "no error", "result fail", "instruction error", "CRC error", "data range error", "data length error",
-        "data limit error (value outside the field's range)", "access error (read-only or unmapped)",
-    ];
-
     /// <inheritdoc />
     public Task<CommandResult> DiscoverAsync() => _commands.Submit(() =>
     {
-        var lines = RunDiscovery();
+        if (MotorsOnRefusal("discovery") is { } refused)
+        {
+            return refused;
+        }
+
+        var lines = LogDiscovery(_bus.Discover());
+        ReadAllParameters();
         return CommandResult.Ok($"{_found} of {_bus.Controllers.Count} modules found", lines);
     });
 
@@ -73,6 +73,11 @@ public sealed partial class HeadlessSession
 
         return _commands.Submit(() =>
         {
+            if (MotorsOnRefusal($"rebooting module {c.Id}") is { } refused)
+            {
+                return refused;
+            }
+
             var reply = _bus.Client.Reboot(c.Id);
             if (reply.Outcome != ReplyOutcome.Ok)
             {
@@ -116,9 +121,10 @@ public sealed partial class HeadlessSession
 
             if (!reply.Succeeded)
             {
-                var code = reply.Error & 0x7F;
-                var words = code < StatusErrors.Length ? StatusErrors[code] : "unknown error";
-                var message = $"module {c.Id} refused {p.Field.Name}[{ch}] = {counts} ({value:G6} {p.Unit}): error 0x{code:X2}, {words}";
+                var hint = StatusErrors.Number(reply.Error) == StatusError.Access && TorqueOn
+                    ? $"; the persistent area is written with the motors off (run level {_supervisor.Level.Name()}): turn torque off first"
+                    : string.Empty;
+                var message = $"module {c.Id} refused {p.Field.Name}[{ch}] = {counts} ({value:G6} {p.Unit}): error {StatusErrors.Describe(reply.Error)}{hint}";
                 _events.Add(Now, "console", message);
                 return CommandResult.Fail(CommandOutcome.Refused, message);
             }
@@ -147,9 +153,9 @@ public sealed partial class HeadlessSession
 
         return _commands.Submit(() =>
         {
-            if (!_torqueOn)
+            if (MotionRefusal("jog") is { } refused)
             {
-                return CommandResult.Fail(CommandOutcome.Refused, "the motors are off: turn torque on to jog");
+                return refused;
             }
 
             m.Jog(degPerS * Math.PI / 180);
@@ -174,9 +180,9 @@ public sealed partial class HeadlessSession
 
         return _commands.Submit(() =>
         {
-            if (!_torqueOn)
+            if (MotionRefusal("a setpoint") is { } refused)
             {
-                return CommandResult.Fail(CommandOutcome.Refused, "the motors are off: turn torque on to move");
+                return refused;
             }
 
             m.SetSetpoint(deg * Math.PI / 180);
@@ -202,10 +208,65 @@ public sealed partial class HeadlessSession
     /// <inheritdoc />
     public Task<CommandResult> TorqueAsync(bool on) => _commands.Submit(() =>
     {
-        _bus.EnableTorque(on);
-        _torqueOn = on;
-        _events.Add(Now, "console", on ? "torque on" : "torque off");
-        return CommandResult.Ok(on ? "motors on" : "motors off");
+        if (!on)
+        {
+            _supervisor.MotorsOff("console");
+            LogSupervisor();
+            return CommandResult.Ok($"motors off (run level {_supervisor.Level.Name()})");
+        }
+
+        if (_supervisor.Level is RunLevel.PedalUp or RunLevel.PedalDown)
+        {
+            return CommandResult.Ok($"the motors are on already (run level {_supervisor.Level.Name()})");
+        }
+
+        if (_supervisor.Level == RunLevel.EStop)
+        {
+            return CommandResult.Fail(CommandOutcome.Refused, "the run level is E_STOP: clear faults (an operator reset) first, then turn torque on");
+        }
+
+        try
+        {
+            var homed = _supervisor.Home("console");
+            LogSupervisor();
+            return CommandResult.Ok(homed.Count == 0 ? "motors on, holding (run level PEDAL_UP)" : $"{homed.Count} motors homed; motors on, holding (run level PEDAL_UP)");
+        }
+        catch (InvalidOperationException ex)
+        {
+            LogSupervisor();
+            return CommandResult.Fail(CommandOutcome.Refused, $"torque on: {ex.Message}");
+        }
+    });
+
+    /// <inheritdoc />
+    public Task<CommandResult> PedalAsync(bool down) => _commands.Submit(() =>
+    {
+        if (!down)
+        {
+            _supervisor.PedalUp("console");
+            LogSupervisor();
+            return CommandResult.Ok($"pedal up: holding (run level {_supervisor.Level.Name()})");
+        }
+
+        try
+        {
+            _supervisor.PedalDown("console");
+        }
+        catch (InvalidOperationException ex)
+        {
+            return CommandResult.Fail(CommandOutcome.Refused, $"{ex.Message}: turn torque on first");
+        }
+
+        LogSupervisor();
+        return CommandResult.Ok("pedal down: the arms follow the graph and the console's jogs (run level PEDAL_DOWN)");
+    });
+
+    /// <inheritdoc />
+    public Task<CommandResult> EmergencyStopAsync() => _commands.Submit(() =>
+    {
+        _supervisor.EmergencyStop("console", "operator's emergency stop on the console");
+        LogSupervisor();
+        return CommandResult.Ok($"emergency stop: run level {_supervisor.Level.Name()}; clear faults to reset");
     });
 
     /// <inheritdoc />
@@ -219,9 +280,9 @@ public sealed partial class HeadlessSession
 
         return _commands.Submit(() =>
         {
-            if (_torqueOn)
+            if (_supervisor.Level != RunLevel.Init)
             {
-                return CommandResult.Fail(CommandOutcome.Refused, "homing needs the motors off: turn torque off first (a driven motor must not change coordinates)");
+                return CommandResult.Fail(CommandOutcome.Refused, $"homing needs the motors off at run level INIT, it is {_supervisor.Level.Name()}: {(_supervisor.Level == RunLevel.EStop ? "clear faults (reset) first" : "turn torque off first")} (a driven motor must not change coordinates)");
             }
 
             var results = only is null ? _bus.Home() : [HomeOne(only)];
@@ -242,6 +303,14 @@ public sealed partial class HeadlessSession
     public Task<CommandResult> ClearFaultsAsync() => _commands.Submit(() =>
     {
         _bus.ClearFaults();
+        if (_supervisor.Level == RunLevel.EStop)
+        {
+            _supervisor.Reset("console");
+            LogSupervisor();
+            _events.Add(Now, "console", "faults cleared; E_STOP reset to INIT");
+            return CommandResult.Ok("faults cleared; run level INIT: turn torque on to home and hold");
+        }
+
         _events.Add(Now, "console", "faults cleared");
         return CommandResult.Ok("faults cleared");
     });
@@ -250,7 +319,7 @@ public sealed partial class HeadlessSession
     internal async Task<double> VirtualOutputDeg(string motor)
     {
         var m = FindMotor(motor) ?? throw new KeyNotFoundException(motor);
-        var sim = _sim ?? throw new InvalidOperationException("not a virtual session");
+        var sim = _session.Simulation ?? throw new InvalidOperationException("not a virtual session");
         double value = double.NaN;
         await _commands.Submit(() =>
         {
@@ -259,6 +328,16 @@ public sealed partial class HeadlessSession
         }).ConfigureAwait(false);
         return value;
     }
+
+    /// <summary>A refusal when the motors are on (run level PEDAL_UP or PEDAL_DOWN), else null.</summary>
+    private CommandResult? MotorsOnRefusal(string action) => TorqueOn
+        ? CommandResult.Fail(CommandOutcome.Refused, $"{action} needs the motors off, the run level is {_supervisor.Level.Name()}: turn torque off first")
+        : null;
+
+    /// <summary>A refusal unless the run level lets the console move the robot (PEDAL_DOWN), else null.</summary>
+    private CommandResult? MotionRefusal(string action) => _supervisor.Level == RunLevel.PedalDown
+        ? null
+        : CommandResult.Fail(CommandOutcome.Refused, $"{action} moves the robot: it needs the run level PEDAL_DOWN, it is {_supervisor.Level.Name()} ({(_supervisor.Level == RunLevel.PedalUp ? "press the pedal" : "turn torque on, then press the pedal")})");
 
     private static Task<CommandResult> Bad(string message) => Task.FromResult(CommandResult.Fail(CommandOutcome.BadInput, message));
 

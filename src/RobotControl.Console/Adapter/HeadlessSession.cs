@@ -1,94 +1,86 @@
-using RobotControl.Modules;
 using System.Diagnostics;
-using RobotControl.Bus.Client;
-using RobotControl.Bus.Transports;
 using RobotControl.Hardware.Model;
+using RobotControl.Host.Safety;
+using RobotControl.Host.Session;
+using RobotControl.Kinematics.Urdf;
+using RobotControl.Modules;
+using RobotControl.Plugins.Sdk;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
-using RobotControl.Runtime.GraphFiles;
-using RobotControl.Host.Harness;
 using RobotControl.Runtime.Loop;
-using RobotControl.Simulation;
-using RobotControl.Simulation.Time;
 using RobotControl.WebConsole.Session;
-using RobotControl.WebConsole.Urdf;
 
 namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>
-/// The console's session over today's building blocks: the graph file, a <see cref="BusRobot"/> on the virtual robot
-/// (real firmware, paced to real time) or a real transport, and the <see cref="ControlLoop"/>. One thread owns the
-/// bus: it runs the bus cycles, applies the console's queued commands between them, polls module status and publishes
-/// snapshots. On the virtual robot the loop ticks on that thread from the virtual clock (as in the headless run); on a
-/// real bus the loop runs on its own thread. The ring is fed by the loop's tick observer.
+/// The console's session: a <see cref="RobotSession"/> (graph, robot, bus, safety supervisor, control loop, brought up
+/// by the session layer) run by one thread that owns the bus. It runs the bus cycles, applies the console's queued
+/// commands between them, polls module status and publishes snapshots. On the virtual robot the session layer's
+/// <see cref="VirtualSchedule"/> ticks the loop on that thread, paced to the wall clock; on a real bus the loop runs on
+/// its own thread. The ring is fed by the loop's tick observer.
 /// </summary>
 public sealed partial class HeadlessSession : IConsoleSession
 {
     private static readonly TimeSpan PublishEvery = TimeSpan.FromMilliseconds(100);
     private static readonly TimeSpan PollEvery = TimeSpan.FromMilliseconds(200);
 
-    private readonly HeadlessSessionOptions _options;
+    private readonly RobotSession _session;
     private readonly TimeProvider _clock;
-    private readonly LoadedGraph _loaded;
     private readonly RobotDefinition _robot;
-    private readonly VirtualRobot? _sim;
     private readonly BusRobot _bus;
-    private readonly ControlLoop _loop;
+    private readonly SafetySupervisor _supervisor;
     private readonly RingRecorder _recorder;
     private readonly CommandQueue _commands = new();
     private readonly Session.EventLog _events = new();
     private readonly Dictionary<int, string> _names = [];
     private readonly Dictionary<int, ModuleStatus> _status = [];
     private readonly Dictionary<(int Module, int Channel, string Key), double> _parameters = [];
+    private readonly Queue<RobotController> _pendingReads = new();
     private readonly TickStatistics _busTiming = new();
     private readonly TickStatistics _pollTiming = new();
     private readonly TickStatistics _commandTiming = new();
+    private readonly CancellationTokenSource _stop = new();
     private readonly Thread _thread;
     private readonly long _begin;
-    private volatile bool _stop;
-    private volatile bool _torqueOn;
     private volatile SessionStatus _statusView;
     private volatile IReadOnlyList<ControllerView> _controllersView = [];
     private volatile string _state = "starting";
+    private int _levelsLogged;
+    private int _tripsLogged;
+    private long _tickAllocatedBytes;
+    private int _pollNext;
     private int _found;
 
-    /// <summary>Loads the graph, opens the robot, discovers its modules, turns the motors on and starts the session thread.</summary>
+    /// <summary>
+    /// Brings the session up through the session layer (graph, robot, discovery, safety supervisor homing to
+    /// PEDAL_UP with the motors on, control loop), reads the modules' parameters and starts the session thread.
+    /// </summary>
     /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
     /// <exception cref="InvalidOperationException">The graph names no robot, or the transport does not fit.</exception>
     /// <exception cref="IOException">The transport cannot be opened.</exception>
-    public HeadlessSession(HeadlessSessionOptions options, IUrdfSource? urdf = null)
+    public HeadlessSession(HeadlessSessionOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
-        _options = options;
-        _clock = options.Virtual ? new ManualTimeProvider() : TimeProvider.System;
-        _loaded = GraphFile.Load(options.GraphPath, options.Catalog, _clock);
-        _robot = _loaded.Robot ?? throw new InvalidOperationException($"{_loaded.Path}: the graph names no robot file");
-        Transport = options.Virtual ? $"virtual:{Path.GetFileName(_robot.SourceFile)}" : options.Transport ?? _loaded.Document.Transport;
-        IByteLink link;
-        if (options.Virtual)
-        {
-            _sim = new VirtualRobot(_robot, (ManualTimeProvider)_clock, new VirtualRobotOptions { InitialJointsRad = HeadlessRun.InitialCommand(_loaded), Seed = options.Seed });
-            link = _sim.OpenLink();
-        }
-        else
-        {
-            if (Transport.StartsWith("virtual", StringComparison.OrdinalIgnoreCase))
-            {
-                throw new InvalidOperationException($"the graph's transport is '{Transport}': use --virtual, or name a serial, usb or tcp transport with --transport");
-            }
-
-            link = LinkFactory.Open(Transport);
-        }
-
-        _bus = new BusRobot(_robot, new BusClient(link, _clock));
+        var slot = new ObserverSlot();
+        _session = RobotSession.Open(
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot },
+            options.Catalog);
+        _robot = _session.Connection.Definition!;
+        _bus = _session.Robot;
+        _supervisor = _session.Supervisor;
+        _clock = _session.Clock;
         _begin = _clock.GetTimestamp();
-        _recorder = new RingRecorder(_loaded.Program, _loaded.RobotNode!, options.RingCapacity);
-        Model = BuildModel(urdf ?? new DhUrdfSource());
-        RunDiscovery();
-        _bus.EnableTorque(true);
-        _torqueOn = true;
-        _loaded.RobotNode!.Attach(_bus);
-        _loop = new ControlLoop(_loaded.Program, _clock, _loaded.Document.LoopRateHz, _recorder);
+        _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
+        slot.Target = _recorder;
+        Transport = options.Virtual ? $"virtual:{Path.GetFileName(_robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;
+        Model = BuildModel();
+        LogDiscovery(_session.Discovery);
+        foreach (var c in _bus.Controllers.Where(c => c.Present))
+        {
+            _pendingReads.Enqueue(c); // read between the first cycles, one module at a time
+        }
+
+        LogSupervisor();
         _statusView = BuildStatus();
         PublishControllers();
         _thread = new Thread(Run) { Name = "console session (bus)", IsBackground = true, Priority = ThreadPriority.AboveNormal };
@@ -113,14 +105,14 @@ public sealed partial class HeadlessSession : IConsoleSession
     /// <inheritdoc />
     public IReadOnlyList<ComponentTiming> Timings =>
     [
-        Timing($"control loop tick ({_loaded.Program.Order.Count} instances)", _loop.Statistics),
+        Timing($"control loop tick ({_session.Graph.Program.Order.Count} instances)", _session.Loop.Statistics),
         Timing("bus cycle (sync write + sync read)", _busTiming),
         Timing("module status poll", _pollTiming),
         Timing("console commands", _commandTiming),
     ];
 
     /// <summary>The loop (benchmarks read its statistics).</summary>
-    internal ControlLoop Loop => _loop;
+    internal ControlLoop Loop => _session.Loop;
 
     /// <inheritdoc />
     public IReadOnlyList<EventEntry> EventsAfter(long after) => _events.After(after);
@@ -128,21 +120,24 @@ public sealed partial class HeadlessSession : IConsoleSession
     /// <inheritdoc />
     public void Dispose()
     {
-        _stop = true;
+        _stop.Cancel();
         _thread.Join();
         _commands.Close();
-        _loop.Stop();
+        _session.Loop.Stop();
         try
         {
-            _bus.EnableTorque(false);
+            if (_bus.State is Robot.States.RobotState.Enabled or Robot.States.RobotState.Fault)
+            {
+                _bus.EnableTorque(false);
+            }
         }
         catch (IOException)
         {
             // The bus is gone; nothing more to switch off.
         }
 
-        _bus.Dispose();
-        _sim?.Dispose();
+        _session.Dispose();
+        _stop.Dispose();
     }
 
     private static ComponentTiming Timing(string name, TickStatistics s) => new(name, s.Count, s.MedianUs, s.P99Us, s.MaxUs);
@@ -154,7 +149,7 @@ public sealed partial class HeadlessSession : IConsoleSession
         try
         {
             _state = "running";
-            if (_sim is not null)
+            if (_session.IsVirtual)
             {
                 RunVirtual();
             }
@@ -162,8 +157,10 @@ public sealed partial class HeadlessSession : IConsoleSession
             {
                 RunRealTime();
             }
-
-            _state = "stopped";
+        }
+        catch (OperationCanceledException) when (_stop.IsCancellationRequested)
+        {
+            // Disposed: the session ends here.
         }
 #pragma warning disable CA1031 // the session thread reports what ended it in the status and the event log
         catch (Exception ex)
@@ -172,39 +169,54 @@ public sealed partial class HeadlessSession : IConsoleSession
             _state = "failed";
             _events.Add(Now, "session", $"the session thread stopped: {ex.Message}");
             _statusView = BuildStatus();
+            return;
         }
+
+        _state = "stopped";
     }
 
     private void RunVirtual()
     {
-        // The loop ticks from a timer on the virtual clock while the bus cycles move it; the thread sleeps whenever
-        // the virtual clock gets ahead of the wall clock, so the virtual robot runs in real time.
+        // The session layer's schedule runs bus cycles and the loop ticks due on the virtual clock; between cycles
+        // the console's work runs, and the thread sleeps whenever the virtual clock gets ahead of the wall clock, so
+        // the virtual robot runs in real time.
         var wall = Stopwatch.StartNew();
-        using var timer = _clock.CreateTimer(_ => _loop.Step(), null, _loop.Period, _loop.Period);
         var nextPublish = 0.0;
         var nextPoll = 0.0;
-        while (!_stop)
+        var cycleBegin = Stopwatch.GetTimestamp();
+        _session.RunVirtual(long.MaxValue, () =>
         {
+            _busTiming.Record(Stopwatch.GetTimestamp() - cycleBegin);
+            _stop.Token.ThrowIfCancellationRequested();
             Between(ref nextPublish, ref nextPoll);
-            var begin = Stopwatch.GetTimestamp();
-            _bus.RunFor(TimeSpan.FromMilliseconds(1));
-            _busTiming.Record(Stopwatch.GetTimestamp() - begin);
             var ahead = Now - wall.Elapsed.TotalSeconds;
             if (ahead > 0.002)
             {
                 Thread.Sleep(TimeSpan.FromSeconds(ahead));
             }
-        }
+
+            cycleBegin = Stopwatch.GetTimestamp();
+        }, StepCountingAllocations);
+    }
+
+    /// <summary>One loop tick (the loop plus the ring recorder), counting what it allocates on this thread.</summary>
+    private void StepCountingAllocations(ControlLoop loop, long timestamp)
+    {
+        var before = GC.GetAllocatedBytesForCurrentThread();
+        loop.Step();
+        Interlocked.Add(ref _tickAllocatedBytes, GC.GetAllocatedBytesForCurrentThread() - before);
     }
 
     private void RunRealTime()
     {
-        _loop.Start();
+        // The loop runs on its own thread; this thread owns the bus, so the console's commands run between cycles.
+        var loop = _session.Loop;
+        loop.Start();
         var nextPublish = 0.0;
         var nextPoll = 0.0;
         try
         {
-            while (!_stop && _loop.ThreadFailure is null)
+            while (!_stop.IsCancellationRequested && loop.ThreadFailure is null)
             {
                 Between(ref nextPublish, ref nextPoll);
                 var begin = Stopwatch.GetTimestamp();
@@ -219,7 +231,7 @@ public sealed partial class HeadlessSession : IConsoleSession
                 }
 
                 _busTiming.Record(Stopwatch.GetTimestamp() - begin);
-                while (Stopwatch.GetElapsedTime(begin) < TimeSpan.FromMilliseconds(1) && !_stop)
+                while (Stopwatch.GetElapsedTime(begin) < TimeSpan.FromMilliseconds(1) && !_stop.IsCancellationRequested)
                 {
                     Thread.SpinWait(50);
                 }
@@ -227,10 +239,10 @@ public sealed partial class HeadlessSession : IConsoleSession
         }
         finally
         {
-            _loop.Stop();
+            loop.Stop();
         }
 
-        if (_loop.ThreadFailure is { } failure)
+        if (loop.ThreadFailure is { } failure)
         {
             throw new InvalidOperationException($"control loop failed: {failure.Message}", failure);
         }
@@ -251,37 +263,42 @@ public sealed partial class HeadlessSession : IConsoleSession
             _events.Add(Now, "robot", line.Message);
         }
 
+        // Bus work is spread over the cycles (one module's reads at a time), so no gap between two cycles grows
+        // beyond a few milliseconds while the motors are on.
         var now = Now;
         if (now >= nextPoll)
         {
-            nextPoll = now + PollEvery.TotalSeconds;
+            nextPoll = now + (PollEvery.TotalSeconds / Math.Max(1, _bus.Controllers.Count));
             begin = Stopwatch.GetTimestamp();
-            PollModules();
+            if (_pendingReads.TryDequeue(out var unread))
+            {
+                ReadParameters(unread);
+            }
+            else
+            {
+                PollNextModule();
+            }
+
             _pollTiming.Record(Stopwatch.GetTimestamp() - begin);
         }
 
         if (now >= nextPublish)
         {
             nextPublish = now + PublishEvery.TotalSeconds;
+            LogSupervisor();
             _statusView = BuildStatus();
             PublishControllers();
         }
     }
 
-    /// <summary>Discovers the modules, logs and returns what was found, and reads the present ones' parameters.</summary>
-    private List<string> RunDiscovery()
+    /// <summary>Logs what discovery found and returns it as lines.</summary>
+    private List<string> LogDiscovery(DiscoveryReport report)
     {
-        var report = _bus.Discover();
         _found = report.Present.Count;
         var lines = report.Lines().Select(l => l.Trim()).ToList();
         foreach (var line in lines)
         {
             _events.Add(Now, "discovery", line);
-        }
-
-        foreach (var c in _bus.Controllers.Where(c => c.Present))
-        {
-            ReadParameters(c);
         }
 
         while (_bus.Events.TryDequeue(out _))
@@ -290,6 +307,31 @@ public sealed partial class HeadlessSession : IConsoleSession
         }
 
         return lines;
+    }
+
+    private void ReadAllParameters()
+    {
+        foreach (var c in _bus.Controllers.Where(c => c.Present))
+        {
+            ReadParameters(c);
+        }
+    }
+
+    /// <summary>Copies the supervisor's new run-level changes and trips into the event log.</summary>
+    private void LogSupervisor()
+    {
+        var history = _supervisor.History;
+        for (; _levelsLogged < history.Count; _levelsLogged++)
+        {
+            var h = history[_levelsLogged];
+            _events.Add(Now, "safety", $"{h.From.Name()} -> {h.To.Name()} ({h.Source}): {h.Reason}");
+        }
+
+        var trips = _supervisor.Trips;
+        for (; _tripsLogged < trips.Count; _tripsLogged++)
+        {
+            _events.Add(Now, "safety", $"trip: {trips[_tripsLogged]}");
+        }
     }
 
     private void ReadParameters(RobotController c)
@@ -303,10 +345,13 @@ public sealed partial class HeadlessSession : IConsoleSession
         }
     }
 
-    private void PollModules()
+    /// <summary>Reads the status of the next present module (round robin).</summary>
+    private void PollNextModule()
     {
-        foreach (var c in _bus.Controllers)
+        var controllers = _bus.Controllers;
+        for (var n = 0; n < controllers.Count; n++)
         {
+            var c = controllers[_pollNext++ % controllers.Count];
             if (!c.Present)
             {
                 continue;
@@ -320,6 +365,8 @@ public sealed partial class HeadlessSession : IConsoleSession
             {
                 // A module that stops answering is reported by the bus cycles; keep its last status.
             }
+
+            return;
         }
     }
 
@@ -335,26 +382,31 @@ public sealed partial class HeadlessSession : IConsoleSession
             retries += s.Retries;
         }
 
-        var stats = _loop?.Statistics;
+        var stats = _session.Loop.Statistics;
         var faults = _bus.Faults;
-        var state = _state == "running" && _loaded.RobotNode!.Holding ? "holding (a plug-in faulted)" : _state;
+        var state = _state == "running" && _session.Node.Holding ? "holding (a plug-in faulted)" : _state;
+        var faultNames = Enum.GetValues<RobotFaults>().Where(f => f != RobotFaults.None && faults.HasFlag(f)).Select(f => f.ToString())
+            .Concat(_supervisor.Level == RunLevel.EStop ? _supervisor.Trips.Select(t => $"trip: {t}") : []);
         return new SessionStatus(
             _robot.Name,
-            Path.GetFileName(_loaded.Path),
+            Path.GetFileName(_session.Graph.Path),
             Transport,
             _bus.Controllers.Count,
             _found,
-            _loaded.Document.LoopRateHz,
-            _loop?.TickCount ?? 0,
-            stats?.DeadlineMisses ?? 0,
-            stats?.MedianUs ?? 0,
-            stats?.P99Us ?? 0,
-            stats?.MaxUs ?? 0,
+            _session.Graph.Document.LoopRateHz,
+            _session.Loop.TickCount,
+            stats.DeadlineMisses,
+            stats.MedianUs,
+            stats.P99Us,
+            stats.MaxUs,
+            _session.IsVirtual ? Interlocked.Read(ref _tickAllocatedBytes) : null,
             Now,
+            _supervisor.Level.Name(),
+            _bus.State.ToString(),
             state,
-            _torqueOn,
-            faults == RobotFaults.None ? [] : [.. Enum.GetValues<RobotFaults>().Where(f => f != RobotFaults.None && faults.HasFlag(f)).Select(f => f.ToString())],
-            _loaded.Program.FaultCount,
+            TorqueOn,
+            [.. faultNames],
+            _session.Graph.Program.FaultCount,
             new BusCounters(_bus.Cycles, frames, crc, timeouts, retries));
     }
 
@@ -398,16 +450,26 @@ public sealed partial class HeadlessSession : IConsoleSession
         _controllersView = list;
     }
 
-    private RobotModelView BuildModel(IUrdfSource source)
+    /// <summary>True while the motors are driven (the robot layer is enabled).</summary>
+    private bool TorqueOn => _bus.State == Robot.States.RobotState.Enabled;
+
+    /// <summary>The 3D view's model: the host's URDF of the robot (both arms) and each arm's joints and signals.</summary>
+    private RobotModelView BuildModel()
     {
-        var urdf = source.For(_robot);
-        var normal = _robot.MirrorPlaneNormal;
+        var urdf = UrdfExport.ToDocument(_robot).ToString();
         var arms = _robot.Arms.Select(a => new ArmView(
             a.Name,
-            [a.BaseOffsetMm.X / 1000, a.BaseOffsetMm.Y / 1000, a.BaseOffsetMm.Z / 1000],
-            a.Mirrored ? [normal.X, normal.Y, normal.Z] : null,
+            [.. _robot.Joints.Select(j => UrdfExport.JointName(a.Name, j.Name))],
             [.. _robot.Joints.Select(j => RingRecorder.PositionSignal(a.Name, j.Name))],
             [.. _robot.Joints.Select(j => RingRecorder.CommandSignal(a.Name, j.Name))])).ToList();
-        return new RobotModelView(urdf.Xml, urdf.JointNames, arms);
+        return new RobotModelView(urdf, arms);
+    }
+
+    /// <summary>The loop's observer, given to the session layer before the recorder (which needs the loaded graph) exists.</summary>
+    private sealed class ObserverSlot : ITickObserver
+    {
+        public RingRecorder? Target { get; set; }
+
+        public void AfterTick(in TickContext context) => Target?.AfterTick(in context);
     }
 }

@@ -34,6 +34,10 @@ internal sealed record JogBody(double? DegPerS);
 /// <param name="Deg">Axis output angle, degrees.</param>
 internal sealed record SetpointBody(double? Deg);
 
+/// <summary>Body of <c>POST /api/pedal</c>.</summary>
+/// <param name="Down">True: pedal down (the robot moves); false: up (it holds).</param>
+internal sealed record PedalBody(bool? Down);
+
 /// <summary>Torque, <c>{"on": true}</c>.</summary>
 /// <param name="On">True: drive the motors.</param>
 internal sealed record TorqueBody(bool? On);

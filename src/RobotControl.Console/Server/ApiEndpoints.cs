@@ -55,6 +55,12 @@ internal static class ApiEndpoints
             var (body, problem) = await ApiBodies.Read<TorqueBody>(request, "torque").ConfigureAwait(false);
             return body?.On is { } on ? Result(await session.TorqueAsync(on).ConfigureAwait(false)) : Error(StatusCodes.Status400BadRequest, problem ?? "torque: give {\"on\": true|false}");
         });
+        actions.MapPost("/pedal", async (HttpRequest request) =>
+        {
+            var (body, problem) = await ApiBodies.Read<PedalBody>(request, "pedal").ConfigureAwait(false);
+            return body?.Down is { } down ? Result(await session.PedalAsync(down).ConfigureAwait(false)) : Error(StatusCodes.Status400BadRequest, problem ?? "pedal: give {\"down\": true|false}");
+        });
+        actions.MapPost("/estop", async () => Result(await session.EmergencyStopAsync().ConfigureAwait(false)));
         actions.MapPost("/home", async () => Result(await session.HomeAsync(null).ConfigureAwait(false)));
         actions.MapPost("/faults/clear", async () => Result(await session.ClearFaultsAsync().ConfigureAwait(false)));
         actions.MapPut("/controllers/{id:int}/name", async (int id, HttpRequest request) =>

@@ -55,12 +55,18 @@ public interface IConsoleSession : IDisposable
     /// <summary>Hands a motor back to the control loop's setpoints.</summary>
     Task<CommandResult> ReleaseAsync(string motor);
 
-    /// <summary>Turns every motor on or off.</summary>
+    /// <summary>Turns every motor on (homing first where positions are in doubt) or off.</summary>
     Task<CommandResult> TorqueAsync(bool on);
+
+    /// <summary>Presses (down) or releases (up) the pedal: the robot moves (graph, jogs, setpoints) only while it is down.</summary>
+    Task<CommandResult> PedalAsync(bool down);
+
+    /// <summary>An operator's emergency stop (leaving it needs <see cref="ClearFaultsAsync"/>).</summary>
+    Task<CommandResult> EmergencyStopAsync();
 
     /// <summary>Homes one motor (<paramref name="motor"/>) or all of them (null) from their pots; the motors must be off.</summary>
     Task<CommandResult> HomeAsync(string? motor);
 
-    /// <summary>Clears latched faults in the robot and its modules.</summary>
+    /// <summary>Clears latched faults in the robot and its modules; at an emergency stop, resets it (motors off, homing needed).</summary>
     Task<CommandResult> ClearFaultsAsync();
 }

@@ -12,10 +12,13 @@ namespace RobotControl.WebConsole.Session;
 /// <param name="TickMedianUs">Median tick time, microseconds.</param>
 /// <param name="TickP99Us">99th-percentile tick time, microseconds.</param>
 /// <param name="TickMaxUs">Longest tick, microseconds.</param>
+/// <param name="TickAllocatedBytes">Bytes the loop's ticks (loop and ring recorder) allocated since the start, counted on a virtual session's thread; null on a real bus.</param>
 /// <param name="SessionSeconds">Session (loop clock) time so far.</param>
-/// <param name="RobotState">Running, holding, stopped or failed.</param>
+/// <param name="RobotState">The safety supervisor's run level: E_STOP, INIT, HOMING, PEDAL_UP or PEDAL_DOWN.</param>
+/// <param name="RobotLayer">The robot layer's state (Disabled, Discovered, Homing, Homed, Enabled, Fault).</param>
+/// <param name="Session">The console's session thread: running (or holding, when a plug-in faulted), stopped or failed.</param>
 /// <param name="TorqueOn">True while the motors are driven.</param>
-/// <param name="Faults">The robot's fault flags by name (empty when healthy).</param>
+/// <param name="Faults">The robot's fault flags by name and the supervisor's trips (empty when healthy).</param>
 /// <param name="PluginFaults">Plug-in faults of the graph.</param>
 /// <param name="Bus">Bus counters.</param>
 public sealed record SessionStatus(
@@ -30,8 +33,11 @@ public sealed record SessionStatus(
     double TickMedianUs,
     double TickP99Us,
     double TickMaxUs,
+    long? TickAllocatedBytes,
     double SessionSeconds,
     string RobotState,
+    string RobotLayer,
+    string Session,
     bool TorqueOn,
     IReadOnlyList<string> Faults,
     int PluginFaults,
@@ -120,16 +126,14 @@ public sealed record EventEntry(long Sequence, double TimeSeconds, string Source
 /// <param name="MaxUs">Longest run, microseconds.</param>
 public sealed record ComponentTiming(string Component, long Count, double MedianUs, double P99Us, double MaxUs);
 
-/// <summary>The 3D view's model: one URDF of the arm, and each arm's placement.</summary>
-/// <param name="Urdf">URDF document of one (right-handed) arm, lengths in metres.</param>
-/// <param name="Joints">URDF joint names in the robot's joint order.</param>
+/// <summary>The 3D view's model: the robot's URDF (both arms, as the host's exporter writes it) and each arm's joints and signals.</summary>
+/// <param name="Urdf">URDF document of the robot (<c>robotctl urdf</c>), lengths in metres.</param>
 /// <param name="Arms">Arms in robot-file order.</param>
-public sealed record RobotModelView(string Urdf, IReadOnlyList<string> Joints, IReadOnlyList<ArmView> Arms);
+public sealed record RobotModelView(string Urdf, IReadOnlyList<ArmView> Arms);
 
-/// <summary>Where one arm sits.</summary>
+/// <summary>One arm of the 3D view.</summary>
 /// <param name="Name">Arm name.</param>
-/// <param name="BaseOffsetM">Base origin, metres.</param>
-/// <param name="MirrorNormal">Normal of the mirror plane for a mirrored arm; null for the model's own handedness.</param>
+/// <param name="Joints">URDF joint names of its joints, in the robot file's joint order.</param>
 /// <param name="PositionSignals">Ring signals of its measured joints, in joint order.</param>
 /// <param name="CommandSignals">Ring signals of its commanded joints, in joint order.</param>
-public sealed record ArmView(string Name, IReadOnlyList<double> BaseOffsetM, IReadOnlyList<double>? MirrorNormal, IReadOnlyList<string> PositionSignals, IReadOnlyList<string> CommandSignals);
+public sealed record ArmView(string Name, IReadOnlyList<string> Joints, IReadOnlyList<string> PositionSignals, IReadOnlyList<string> CommandSignals);

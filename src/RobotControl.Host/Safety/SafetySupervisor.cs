@@ -35,6 +35,7 @@ public sealed class SafetySupervisor
     private readonly long _silentTicks;
     private readonly long _stallTicks;
     private long _lastCycle;
+    private bool _poweredLastCycle;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
 
@@ -171,6 +172,33 @@ public sealed class SafetySupervisor
         _levels.MoveTo(RunLevel.PedalUp, source, reason);
     }
 
+    /// <summary>
+    /// PEDAL_UP or PEDAL_DOWN -> INIT: an operator turns the motors off without an emergency (e.g. to write persistent
+    /// parameters or rediscover the bus); <see cref="Home"/> turns them on again. At E_STOP or INIT the motors are
+    /// turned off and the run level stays.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">Homing runs.</exception>
+    public void MotorsOff(string source)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(source);
+        if (Level == RunLevel.Homing)
+        {
+            throw new InvalidOperationException($"motors off ({source}): homing runs, wait for it to end");
+        }
+
+        PedalUp(source, "pedal up: the motors go off");
+        _robot.HoldAtMeasured();
+        if (_robot.State is RobotState.Enabled or RobotState.Fault)
+        {
+            _robot.EnableTorque(false);
+        }
+
+        if (Level == RunLevel.PedalUp)
+        {
+            _levels.MoveTo(RunLevel.Init, source, "motors off: they go on again through homing (re-homed if positions are in doubt)");
+        }
+    }
+
     /// <summary>An operator's emergency stop (console, CLI or pedal): the operator check's safe state, then E-STOP.</summary>
     public void EmergencyStop(string source, string reason)
     {
@@ -232,12 +260,19 @@ public sealed class SafetySupervisor
         var now = _time.GetTimestamp();
         var gap = _lastCycle == 0 ? 0 : now - _lastCycle;
         _lastCycle = now;
-        if (gap > _stallTicks)
+
+        // A stalled bus or a silent module matters while the motors are powered; with them off (INIT, E_STOP: e.g.
+        // rediscovery or a module reboot from the console) nothing is being controlled, so a gap counts only when the
+        // motors were powered at the cycle before it too, and silence counts from power-up.
+        var powered = _robot.State is RobotState.Enabled or RobotState.Homing or RobotState.Fault;
+        var poweredBefore = _poweredLastCycle;
+        _poweredLastCycle = powered;
+        if (powered && poweredBefore && gap > _stallTicks)
         {
             Trip(SafetyCheck.DeadlineMiss, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
         }
 
-        CheckModules(now);
+        CheckModules(now, powered);
         if (_robot.State == RobotState.Fault)
         {
             Trip(SafetyCheck.ModuleFault, string.Empty, (double)_robot.Faults, 0, "fault flags", now);
@@ -255,12 +290,12 @@ public sealed class SafetySupervisor
         }
     }
 
-    private void CheckModules(long now)
+    private void CheckModules(long now, bool powered)
     {
         for (var i = 0; i < _controllers.Length; i++)
         {
             var c = _controllers[i];
-            if (c.MissedReplies == 0 || _answeredAt[i] == 0)
+            if (!powered || c.MissedReplies == 0 || _answeredAt[i] == 0)
             {
                 _answeredAt[i] = now;
             }

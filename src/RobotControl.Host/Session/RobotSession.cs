@@ -84,7 +84,7 @@ public sealed class RobotSession : IDisposable
         }
         else
         {
-            var transport = loaded.Document.Transport;
+            var transport = options.Transport ?? loaded.Document.Transport;
             if (transport.StartsWith("virtual", StringComparison.OrdinalIgnoreCase))
             {
                 throw new InvalidOperationException($"the graph's transport is '{transport}': run it with --virtual, or name a serial, usb or tcp transport");

@@ -19,6 +19,9 @@ public sealed record SessionOptions
     /// </summary>
     public bool Virtual { get; init; } = true;
 
+    /// <summary>A real session's transport instead of the graph's (serial, usb or tcp); null: the graph's.</summary>
+    public string? Transport { get; init; }
+
     /// <summary>Seed of the virtual robot's random sources (noise, wire faults).</summary>
     public int Seed { get; init; } = 1;
 

@@ -18,7 +18,9 @@ public sealed class ApiTests(ConsoleFixture console)
         Assert.Equal(6, s.GetProperty("modulesFound").GetInt32());
         Assert.Equal(1000, s.GetProperty("loopRateHz").GetDouble());
         Assert.True(s.GetProperty("ticks").GetInt64() > 0);
-        Assert.Equal("running", s.GetProperty("robotState").GetString());
+        Assert.True(s.GetProperty("robotState").GetString() == "PEDAL_UP", $"run level {s.GetProperty("robotState")}, faults {s.GetProperty("faults")}"); // the safety supervisor's
+        Assert.Equal("Enabled", s.GetProperty("robotLayer").GetString());
+        Assert.Equal("running", s.GetProperty("session").GetString());
     }
 
     [Fact]

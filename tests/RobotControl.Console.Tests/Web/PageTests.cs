@@ -15,10 +15,13 @@ public sealed class PageTests(ConsoleFixture console)
     {
         var page = await Open("bus", operate: true);
         await page.GetByTestId("discover").ClickAsync();
+        await Expect(page, "#message.error", "discovery needs the motors off, the run level is PEDAL_UP: turn torque off first");
+        await Click(page, "torque-off", "motors off (run level INIT)");
+        await page.GetByTestId("discover").ClickAsync();
         await Expect(page, "#message.ok", "6 of 6 modules found");
         Assert.Equal(6, await page.Locator("[data-controller]").CountAsync());
         Assert.Equal(6, await page.Locator("[data-field=present]", new() { HasTextString = "present" }).CountAsync());
-        await Screenshot(page, "bus.png");
+        await Click(page, "torque-on", "motors on, holding (run level PEDAL_UP)");
         await Close(page);
     }
 
@@ -30,6 +33,9 @@ public sealed class PageTests(ConsoleFixture console)
         var before = await Number(readout);
         await page.GetByLabel($"jog speed of {Elbow}").FillAsync("20");
         await page.GetByTestId($"jog-plus-{Elbow}").ClickAsync();
+        await Expect(page, "#message.error", "jog moves the robot: it needs the run level PEDAL_DOWN, it is PEDAL_UP (press the pedal)");
+        await Click(page, "pedal-down", "run level PEDAL_DOWN");
+        await page.GetByTestId($"jog-plus-{Elbow}").ClickAsync();
         await Expect(page, "#message.ok", "jogging at 20 deg/s");
         await page.WaitForTimeoutAsync(1500);
         await page.GetByTestId($"jog-stop-{Elbow}").ClickAsync();
@@ -39,7 +45,10 @@ public sealed class PageTests(ConsoleFixture console)
         Assert.True(after - before > 5, $"the readout moved from {before} to {after}");
         var truth = await console.Session.VirtualOutputDeg(Elbow);
         Assert.True(Math.Abs(truth - after) < 1.0, $"page {after} deg, virtual robot {truth} deg");
+        await Screenshot(page, "bus.png");
         await page.GetByRole(AriaRole.Row).Filter(new() { Has = page.GetByTestId($"position-{Elbow}") }).GetByRole(AriaRole.Button, new() { Name = "Release" }).ClickAsync();
+        await Expect(page, "#message.ok", "back under the control loop");
+        await Click(page, "pedal-up", "run level PEDAL_UP");
         await Close(page);
     }
 
@@ -48,6 +57,7 @@ public sealed class PageTests(ConsoleFixture console)
     {
         var page = await Open("bus", operate: true);
         page.Dialog += (_, dialog) => dialog.AcceptAsync();
+        await Click(page, "torque-off", "motors off");
         var input = page.GetByLabel($"P gain of {Elbow}");
         await input.FillAsync("12.5");
         await page.GetByTestId($"write-kp-{Elbow}").ClickAsync();
@@ -67,6 +77,7 @@ public sealed class PageTests(ConsoleFixture console)
         var events = await http.GetStringAsync("api/events");
         Assert.Contains($"module {id}", events, StringComparison.Ordinal);
         Assert.Contains("reset (software)", events, StringComparison.Ordinal);
+        await Click(page, "torque-on", "motors on");
         await Close(page);
     }
 
@@ -76,16 +87,26 @@ public sealed class PageTests(ConsoleFixture console)
         var page = await Open("bus", operate: true);
         page.Dialog += (_, dialog) => dialog.AcceptAsync();
         var before = await page.GetByLabel($"current limit of {Elbow}").InputValueAsync();
+        var gain = await page.GetByLabel($"P gain of {Elbow}").InputValueAsync();
 
-        // 0.3 A is 4914 ADC counts on the 0.25 A-full-scale arm module: the field holds it, the firmware's range (0..4095) does not.
+        // Motors on: the module refuses a persistent write itself (access error), and the page says what to do.
+        await page.GetByLabel($"P gain of {Elbow}").FillAsync("9");
+        await page.GetByTestId($"write-kp-{Elbow}").ClickAsync();
+        await Expect(page, "#message.error", "error 0x07 access error; the persistent area is written with the motors off (run level PEDAL_UP): turn torque off first");
+        await Click(page, "torque-off", "motors off");
+
+        // Motors off: 0.3 A is 4914 ADC counts on the 0.25 A-full-scale arm module: the field holds it, the firmware's range (0..4095) does not.
         await page.GetByLabel($"current limit of {Elbow}").FillAsync("0.3");
         await page.GetByTestId($"write-current_limit-{Elbow}").ClickAsync();
         await Expect(page, "#message.error", "refused current_limit");
-        Assert.Contains("error 0x0", await page.Locator("#message").TextContentAsync(), StringComparison.Ordinal);
+        var refusal = await page.Locator("#message").TextContentAsync() ?? string.Empty;
+        Assert.True(refusal.Contains("error 0x04 data range error", StringComparison.Ordinal), refusal);
         await page.ReloadAsync();
         await page.WaitForSelectorAsync($"[data-testid=\"position-{Elbow}\"]");
         await page.WaitForTimeoutAsync(600);
         Assert.Equal(before, await page.GetByLabel($"current limit of {Elbow}").InputValueAsync());
+        Assert.Equal(gain, await page.GetByLabel($"P gain of {Elbow}").InputValueAsync());
+        await Click(page, "torque-on", "motors on");
         await Close(page);
     }
 
@@ -107,6 +128,7 @@ public sealed class PageTests(ConsoleFixture console)
         var first = await Pixels(page);
         Assert.True(first.Drawn > 500, $"only {first.Drawn} pixels differ from the background");
         using var http = await console.Operator("operator-3d");
+        (await http.PostAsync("api/pedal", new StringContent("{\"down\": true}", System.Text.Encoding.UTF8, "application/json"))).EnsureSuccessStatusCode();
         (await http.PostAsync("api/motors/right.shoulder_yaw/jog", new StringContent("{\"degPerS\": 60}", System.Text.Encoding.UTF8, "application/json"))).EnsureSuccessStatusCode();
         await page.WaitForTimeoutAsync(1500);
         (await http.PostAsync("api/motors/right.shoulder_yaw/jog", new StringContent("{\"degPerS\": 0}", System.Text.Encoding.UTF8, "application/json"))).EnsureSuccessStatusCode();
@@ -116,6 +138,7 @@ public sealed class PageTests(ConsoleFixture console)
         Assert.True(changed > 20, $"only {changed} sampled pixels changed after the joint moved");
         await Screenshot(page, "view3d.png");
         (await http.PostAsync("api/motors/right.shoulder_yaw/release", null)).EnsureSuccessStatusCode();
+        (await http.PostAsync("api/pedal", new StringContent("{\"down\": false}", System.Text.Encoding.UTF8, "application/json"))).EnsureSuccessStatusCode();
         console.ReleaseOperator();
         await Close(page);
     }
@@ -152,8 +175,24 @@ public sealed class PageTests(ConsoleFixture console)
         console.ReleaseOperator();
     }
 
-    private static async Task Expect(IPage page, string selector, string text) =>
-        await page.Locator(selector).Filter(new() { HasTextRegex = new Regex(Regex.Escape(text)) }).First.WaitForAsync(new() { Timeout = 15000 });
+    /// <summary>Clicks a toolbar button and waits for the success message that contains <paramref name="text"/>.</summary>
+    private static async Task Click(IPage page, string testId, string text)
+    {
+        await page.GetByTestId(testId).ClickAsync();
+        await Expect(page, "#message.ok", text);
+    }
+
+    private static async Task Expect(IPage page, string selector, string text)
+    {
+        try
+        {
+            await page.Locator(selector).Filter(new() { HasTextRegex = new Regex(Regex.Escape(text)) }).First.WaitForAsync(new() { Timeout = 15000 });
+        }
+        catch (TimeoutException)
+        {
+            Assert.Fail($"no {selector} saying \"{text}\"; the message line says \"{await page.Locator("#message").TextContentAsync()}\"");
+        }
+    }
 
     private static async Task<double> Number(ILocator locator)
     {

@@ -57,10 +57,11 @@ export interface ControllerView {
 }
 export interface SessionStatus {
   robot: string; graph: string; transport: string; modulesConfigured: number; modulesFound: number; loopRateHz: number; ticks: number;
-  deadlineMisses: number; tickMedianUs: number; tickP99Us: number; tickMaxUs: number; sessionSeconds: number; robotState: string;
+  deadlineMisses: number; tickMedianUs: number; tickP99Us: number; tickMaxUs: number; tickAllocatedBytes: number | null; sessionSeconds: number; robotState: string;
+  robotLayer: string; session: string;
   torqueOn: boolean; faults: string[]; pluginFaults: number;
   bus: { cycles: number; frames: number; crcErrors: number; timeouts: number; retries: number };
 }
 export interface StatusReply { status: SessionStatus; operator: { held: boolean; you: boolean } }
-export interface ArmView { name: string; baseOffsetM: number[]; mirrorNormal: number[] | null; positionSignals: string[]; commandSignals: string[] }
-export interface RobotModel { urdf: string; joints: string[]; arms: ArmView[] }
+export interface ArmView { name: string; joints: string[]; positionSignals: string[]; commandSignals: string[] }
+export interface RobotModel { urdf: string; arms: ArmView[] }

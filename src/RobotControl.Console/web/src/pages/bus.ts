@@ -1,4 +1,4 @@
-import { api, act, type ControllerView, type MotorView, type ParameterSpec } from '../api';
+import { api, act, type ControllerView, type MotorView, type ParameterSpec, type StatusReply } from '../api';
 import { el, button, fmt } from '../dom';
 
 // Bus and controllers: discover; per controller its ID, friendly name, model, firmware, status and alerts; per motor
@@ -8,13 +8,21 @@ export function busPage(root: HTMLElement): () => void {
     button('Discover', () => void act(() => api('POST', '/discover')).then(refresh), { 'data-testid': 'discover' }),
     button('Torque on', () => void act(() => api('POST', '/torque', { on: true })), { 'data-testid': 'torque-on' }),
     button('Torque off', () => void act(() => api('POST', '/torque', { on: false })), { 'data-testid': 'torque-off' }),
+    button('Pedal down', () => void act(() => api('POST', '/pedal', { down: true })), { 'data-testid': 'pedal-down' }),
+    button('Pedal up', () => void act(() => api('POST', '/pedal', { down: false })), { 'data-testid': 'pedal-up' }),
     button('Home all', () => void act(() => api('POST', '/home')), { 'data-testid': 'home-all' }),
-    button('Clear faults', () => void act(() => api('POST', '/faults/clear'))));
+    button('Clear faults', () => void act(() => api('POST', '/faults/clear')), { 'data-testid': 'clear-faults' }),
+    button('E-STOP', () => void act(() => api('POST', '/estop')), { 'data-testid': 'estop', class: 'estop' }),
+    el('span', { class: 'level', 'data-testid': 'run-level' }));
   const list = el('div', { class: 'controllers', 'data-testid': 'controllers' });
   root.append(toolbar, list);
   let shape = '';
 
   async function refresh(): Promise<void> {
+    const { status } = await api<StatusReply>('GET', '/status');
+    const level = toolbar.querySelector('[data-testid=run-level]')!;
+    const text = `run level ${status.robotState} · motors ${status.torqueOn ? 'on' : 'off'}`;
+    if (level.textContent !== text) level.textContent = text;
     const controllers = await api<ControllerView[]>('GET', '/controllers');
     const key = controllers.map((c) => `${c.id}:${c.motors.map((m) => m.name).join(',')}`).join('|');
     if (key !== shape) {

@@ -19,10 +19,11 @@ export function statusPage(root: HTMLElement): () => void {
     const { status: s } = await api<StatusReply>('GET', '/status');
     const rows: [string, string][] = [
       ['robot', `${s.robot} (${s.graph})`], ['transport', s.transport], ['modules', `${s.modulesFound} of ${s.modulesConfigured} found`],
-      ['state', s.robotState], ['torque', s.torqueOn ? 'on' : 'off'], ['loop rate', `${s.loopRateHz} Hz`],
+      ['run level', s.robotState], ['robot layer', s.robotLayer], ['session', s.session], ['torque', s.torqueOn ? 'on' : 'off'], ['loop rate', `${s.loopRateHz} Hz`],
       ['ticks', String(s.ticks)], ['session time', `${fmt(s.sessionSeconds, 1)} s`],
       ['tick time', `median ${fmt(s.tickMedianUs, 1)} µs, p99 ${fmt(s.tickP99Us, 1)} µs, max ${fmt(s.tickMaxUs, 1)} µs`],
-      ['deadline misses', String(s.deadlineMisses)], ['faults', s.faults.join(', ') || 'none'], ['plug-in faults', String(s.pluginFaults)],
+      ['deadline misses', String(s.deadlineMisses)],
+      ['allocated in ticks', s.tickAllocatedBytes === null ? 'not counted (real bus)' : `${s.tickAllocatedBytes} B in ${s.ticks} ticks`], ['faults', s.faults.join(', ') || 'none'], ['plug-in faults', String(s.pluginFaults)],
       ['bus', `${s.bus.cycles} cycles, ${s.bus.frames} frames, ${s.bus.crcErrors} CRC errors, ${s.bus.timeouts} timeouts, ${s.bus.retries} retries`],
     ];
     summary.replaceChildren(...rows.map(([k, v]) => el('tr', {}, el('th', {}, k), el('td', {}, v))));

@@ -30,60 +30,60 @@ export function view3dPage(root: HTMLElement): () => void {
   world.rotation.x = -Math.PI / 2;
   scene.add(world);
 
-  const arms: { measured: URDFRobot; ghost: URDFRobot; positions: string[]; commands: string[] }[] = [];
+  let robots: { measured: URDFRobot; ghost: URDFRobot } | null = null;
+  let arms: RobotModel['arms'] = [];
   let names: string[] = [];
-  let jointNames: string[] = [];
-  let running = true;
 
   const stream = new SignalStream((subscribed, frame: Frame) => {
-    if (subscribed.join() !== names.join() || frame.t.length === 0) return;
+    if (!robots || subscribed.join() !== names.join() || frame.t.length === 0) return;
     const latest = (signal: string) => {
       const column = frame.v[names.indexOf(signal)];
       return column ? column[column.length - 1] : undefined;
     };
     for (const arm of arms) {
-      arm.positions.forEach((s, j) => { const v = latest(s); if (v !== undefined) arm.measured.setJointValue(jointNames[j], v); });
-      arm.commands.forEach((s, j) => { const v = latest(s); if (v !== undefined) arm.ghost.setJointValue(jointNames[j], v); });
+      arm.positionSignals.forEach((s, j) => { const v = latest(s); if (v !== undefined) robots!.measured.setJointValue(arm.joints[j], v); });
+      arm.commandSignals.forEach((s, j) => { const v = latest(s); if (v !== undefined) robots!.ghost.setJointValue(arm.joints[j], v); });
     }
   }, 60);
 
+  // One URDF of the whole robot (both arms, placed and mirrored by the host's exporter), drawn twice: measured and ghost.
   void api<RobotModel>('GET', '/model').then((model) => {
-    jointNames = model.joints;
     const loader = new URDFLoader();
-    for (const arm of model.arms) {
-      const group = new THREE.Group();
-      const [x, y, z] = arm.baseOffsetM;
-      const placement = new THREE.Matrix4().makeTranslation(x, y, z);
-      if (arm.mirrorNormal) {
-        const [nx, ny, nz] = arm.mirrorNormal;
-        const l = Math.hypot(nx, ny, nz);
-        const [a, b, c] = [nx / l, ny / l, nz / l];
-        placement.multiply(new THREE.Matrix4().set(
-          1 - 2 * a * a, -2 * a * b, -2 * a * c, 0,
-          -2 * a * b, 1 - 2 * b * b, -2 * b * c, 0,
-          -2 * a * c, -2 * b * c, 1 - 2 * c * c, 0,
-          0, 0, 0, 1));
-      }
-      group.matrixAutoUpdate = false;
-      group.matrix.copy(placement);
-      const measured = loader.parse(model.urdf);
-      const ghost = loader.parse(model.urdf);
-      ghost.traverse((o) => {
-        const mesh = o as THREE.Mesh;
-        if (mesh.isMesh) mesh.material = new THREE.MeshStandardMaterial({ color: 0xff8800, transparent: true, opacity: 0.3, depthWrite: false, side: THREE.DoubleSide });
-      });
-      measured.traverse((o) => {
-        const mesh = o as THREE.Mesh;
-        if (mesh.isMesh) (mesh.material as THREE.Material).side = THREE.DoubleSide;
-      });
-      group.add(measured, ghost);
-      world.add(group);
-      arms.push({ measured, ghost, positions: arm.positionSignals, commands: arm.commandSignals });
-    }
-    names = model.arms.flatMap((a) => [...a.positionSignals, ...a.commandSignals]);
+    const measured = loader.parse(model.urdf);
+    const ghost = loader.parse(model.urdf);
+    ghost.traverse((o) => {
+      const mesh = o as THREE.Mesh;
+      if (mesh.isMesh) mesh.material = new THREE.MeshStandardMaterial({ color: 0xff8800, transparent: true, opacity: 0.3, depthWrite: false, side: THREE.DoubleSide });
+    });
+    measured.traverse((o) => {
+      const mesh = o as THREE.Mesh;
+      if (mesh.isMesh) mesh.material = new THREE.MeshStandardMaterial({ color: 0x5a7da8, metalness: 0.2, roughness: 0.5, side: THREE.DoubleSide });
+    });
+    world.add(measured, ghost);
+    robots = { measured, ghost };
+    arms = model.arms;
+    names = arms.flatMap((a) => [...a.positionSignals, ...a.commandSignals]);
+    frameCamera(measured);
     stream.subscribe(names);
   });
 
+  // Points the orbit camera at the robot and backs off to see all of it.
+  function frameCamera(robot: URDFRobot): void {
+    world.updateMatrixWorld(true);
+    const box = new THREE.Box3().setFromObject(robot);
+    if (box.isEmpty()) return;
+    const centre = box.getCenter(new THREE.Vector3());
+    const size = box.getSize(new THREE.Vector3()).length();
+    controls.target.copy(centre);
+    camera.position.copy(centre).add(new THREE.Vector3(0.55, 0.4, 0.75).multiplyScalar(size));
+    camera.near = size / 100;
+    camera.far = size * 20;
+    camera.updateProjectionMatrix();
+    grid.position.y = box.min.y;
+    controls.update();
+  }
+
+  let running = true;
   const frame = () => {
     if (!running) return;
     controls.update();
