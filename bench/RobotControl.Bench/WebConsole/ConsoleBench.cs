@@ -10,7 +10,7 @@ namespace RobotControl.Bench.WebConsole;
 
 /// <summary>
 /// <c>console [--graph graphs/teleop-lb.json] [--seconds 10] [--clients 3] [--repeats 3] [--chromium /usr/bin/chromium]
-/// [--out docs/perf/console.json]</c>: the web console on the virtual robot (real time). Per repeat, two fresh sessions:
+/// [--dist src/RobotControl.Console/web/dist/assets] [--out docs/perf/console.json]</c>: the web console on the virtual robot (real time). Per repeat, two fresh sessions:
 /// one without clients and one streaming every joint position and command to N WebSocket clients at 60 Hz (each also
 /// polling status and controllers as the pages do): the loop's tick time, deadline misses and bytes allocated per
 /// tick. Then, in headless Chromium: the signal-change-to-display latency (a timestamp round trip in the page), the
@@ -44,6 +44,7 @@ internal sealed class ConsoleBench : IBenchCommand
         }
 
         var browser = BrowserMeasures.Measure(Open(graph, catalog), chromium).GetAwaiter().GetResult();
+        var chunks = BrowserMeasures.AllChunks(Arg(args, "--dist") ?? "src/RobotControl.Console/web/dist/assets");
         var idle = runs.Where(x => x.Clients == 0).ToList();
         var busy = runs.Where(x => x.Clients > 0).ToList();
         var summary = new
@@ -58,8 +59,10 @@ internal sealed class ConsoleBench : IBenchCommand
             browser.AfterReplyLatencyMedianMs,
             browser.FirstLoadMedianMs,
             browser.LoadEventMedianMs,
-            browser.BundleJsBytes,
-            browser.BundleJsGzipBytes,
+            browser.FirstLoadJsBytes,
+            browser.FirstLoadJsGzipBytes,
+            allJsBytes = chunks.Js,
+            allJsGzipBytes = chunks.Gzip,
         };
         var command = $"dotnet run -c Release --project bench/RobotControl.Bench -- console --graph {graph} --seconds {seconds.ToString(c)} --clients {clients} --repeats {repeats} --out {outPath}";
         var json = JsonSerializer.Serialize(new { command, measuredUtc = DateTime.UtcNow, Environment.ProcessorCount, graph, seconds, clients, repeats, summary, runs, browser }, JsonOptions);

@@ -39,7 +39,7 @@ internal static class StreamEndpoint
     private sealed class Client(WebSocket socket, SignalRing ring) : IDisposable
     {
         private readonly SemaphoreSlim _send = new(1, 1);
-        private volatile Subscription _subscription = new([], [], 1 / MaxRateHz);
+        private volatile Subscription _subscription = new([], [], 1 / MaxRateHz, 0);
         private long _cursor = ring.Written;
 
         public async Task Run(CancellationToken aborted)
@@ -108,8 +108,9 @@ internal static class StreamEndpoint
                     var rate = root.TryGetProperty("rateHz", out var r) && r.TryGetDouble(out var hz) && hz > 0 ? Math.Min(hz, MaxRateHz) : MaxRateHz;
                     var known = wanted.Where(n => ring.IndexOf(n) >= 0).ToList();
                     Interlocked.Exchange(ref _cursor, ring.Written);
-                    _subscription = new Subscription(known, [.. known.Select(ring.IndexOf)], 1 / rate);
-                    await Send(new { Subscribed = known, Unknown = unknown, RateHz = rate }, token).ConfigureAwait(false);
+                    var id = root.TryGetProperty("id", out var given) && given.TryGetInt64(out var n) ? n : 0;
+                    _subscription = new Subscription(known, [.. known.Select(ring.IndexOf)], 1 / rate, id);
+                    await Send(new { Subscribed = known, Unknown = unknown, RateHz = rate, Id = id }, token).ConfigureAwait(false);
                 }
             }
             catch (Exception ex) when (ex is JsonException or InvalidOperationException or KeyNotFoundException)
@@ -122,8 +123,8 @@ internal static class StreamEndpoint
         {
             while (!token.IsCancellationRequested && socket.State == WebSocketState.Open)
             {
+                await Task.Delay(TimeSpan.FromSeconds(_subscription.PeriodS), token).ConfigureAwait(false);
                 var subscription = _subscription;
-                await Task.Delay(TimeSpan.FromSeconds(subscription.PeriodS), token).ConfigureAwait(false);
                 if (subscription.Columns.Count == 0)
                 {
                     continue;
@@ -133,7 +134,7 @@ internal static class StreamEndpoint
                 Interlocked.Exchange(ref _cursor, slice.Next);
                 if (slice.Times.Count > 0)
                 {
-                    await Send(new { T = slice.Times, V = slice.Values, Seq = slice.Next, ServerMs = DateTimeOffset.UtcNow.ToUnixTimeMilliseconds() }, token).ConfigureAwait(false);
+                    await Send(new { T = slice.Times, V = slice.Values, Seq = slice.Next, Id = subscription.Id, ServerMs = DateTimeOffset.UtcNow.ToUnixTimeMilliseconds() }, token).ConfigureAwait(false);
                 }
             }
         }
@@ -153,5 +154,6 @@ internal static class StreamEndpoint
         }
     }
 
-    private sealed record Subscription(IReadOnlyList<string> Names, IReadOnlyList<int> Columns, double PeriodS);
+    /// <summary>What a client streams; <paramref name="Id"/> is the client's number for it, echoed in every frame.</summary>
+    private sealed record Subscription(IReadOnlyList<string> Names, IReadOnlyList<int> Columns, double PeriodS, long Id);
 }

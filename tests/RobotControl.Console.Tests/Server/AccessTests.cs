@@ -40,17 +40,26 @@ public sealed class AccessTests(ConsoleFixture console)
         using var own = new ClientWebSocket();
         own.Options.SetRequestHeader("Origin", $"http://{console.Server.BaseUrl.Authority}");
         await own.ConnectAsync(ws, CancellationToken.None);
-        await own.SendAsync("{\"subscribe\":[\"robot.right.elbow.position\"],\"rateHz\":60}"u8.ToArray(), WebSocketMessageType.Text, true, CancellationToken.None);
+        await own.SendAsync("{\"subscribe\":[\"robot.right.elbow.position\"],\"rateHz\":60,\"id\":1}"u8.ToArray(), WebSocketMessageType.Text, true, CancellationToken.None);
+        await own.SendAsync("{\"subscribe\":[\"robot.right.elbow.command\",\"robot.left.elbow.position\"],\"rateHz\":60,\"id\":2}"u8.ToArray(), WebSocketMessageType.Text, true, CancellationToken.None);
         var buffer = new byte[1 << 16];
-        var sawRows = false;
+        var frames = new List<System.Text.Json.JsonElement>();
         using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(10));
-        while (!sawRows)
+        while (frames.Count < 5)
         {
             var r = await own.ReceiveAsync(buffer, timeout.Token);
-            sawRows = System.Text.Encoding.UTF8.GetString(buffer, 0, r.Count).Contains("\"t\":[", StringComparison.Ordinal);
+            var message = System.Text.Json.JsonDocument.Parse(buffer.AsMemory(0, r.Count)).RootElement.Clone();
+            if (message.TryGetProperty("t", out _))
+            {
+                frames.Add(message);
+            }
         }
 
-        Assert.True(sawRows);
+        // Every frame names the subscription it was cut for: the last ones carry both columns of subscription 2.
+        var last = frames[^1];
+        Assert.Equal(2, last.GetProperty("id").GetInt64());
+        Assert.Equal(2, last.GetProperty("v").GetArrayLength());
+        Assert.All(frames, f => Assert.Equal(f.GetProperty("id").GetInt64() == 2 ? 2 : 1, f.GetProperty("v").GetArrayLength()));
     }
 
     [Fact]

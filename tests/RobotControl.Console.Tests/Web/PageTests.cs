@@ -116,7 +116,22 @@ public sealed class PageTests(ConsoleFixture console)
         var page = await Open("plots", operate: false);
         await page.WaitForFunctionAsync("() => parseInt(document.querySelector('[data-testid=plot-samples]').textContent) > 100", null, new() { Timeout = 15000 });
         Assert.True(await page.Locator(".plot canvas").CountAsync() > 0);
+
+        // Two signals in one plot while another console jogs the elbow out and back.
+        await page.GetByTestId("signal-picker").SelectOptionAsync([$"robot.{Elbow}.position", $"robot.{Elbow}.command"]);
+        using var http = await console.Operator("operator-plots");
+        await Post(http, "api/pedal", "{\"down\": true}");
+        foreach (var speed in new[] { 40, -40, 0 })
+        {
+            await Post(http, $"api/motors/{Elbow}/jog", $"{{\"degPerS\": {speed}}}");
+            await page.WaitForTimeoutAsync(1200);
+        }
+
+        await Post(http, $"api/motors/{Elbow}/release", "{}");
+        await Post(http, "api/pedal", "{\"down\": false}");
+        await page.WaitForFunctionAsync("() => parseInt(document.querySelector('[data-testid=plot-samples]').textContent) > 2000", null, new() { Timeout = 15000 });
         await Screenshot(page, "plots.png");
+        console.ReleaseOperator();
         await Close(page);
     }
 
@@ -174,6 +189,9 @@ public sealed class PageTests(ConsoleFixture console)
         await page.Context.CloseAsync();
         console.ReleaseOperator();
     }
+
+    private static async Task Post(HttpClient http, string path, string json) =>
+        (await http.PostAsync(path, new StringContent(json, System.Text.Encoding.UTF8, "application/json"))).EnsureSuccessStatusCode();
 
     /// <summary>Clicks a toolbar button and waits for the success message that contains <paramref name="text"/>.</summary>
     private static async Task Click(IPage page, string testId, string text)

@@ -1,25 +1,32 @@
 import './style.css';
 import { api, act, show, type StatusReply } from './api';
 import { busPage } from './pages/bus';
-import { plotsPage } from './pages/plots';
-import { view3dPage } from './pages/view3d';
-import { statusPage } from './pages/status';
 
 /** A page: renders into its element, and stops its timers and sockets when left. */
 export type Page = (root: HTMLElement) => () => void;
 
-const pages: Record<string, Page> = { bus: busPage, plots: plotsPage, view3d: view3dPage, status: statusPage };
+// The bus page ships in the main chunk; the others load on first visit (three.js and uPlot are most of the bundle).
+const pages: Record<string, () => Promise<Page>> = {
+  bus: () => Promise.resolve(busPage),
+  plots: async () => (await import('./pages/plots')).plotsPage,
+  view3d: async () => (await import('./pages/view3d')).view3dPage,
+  status: async () => (await import('./pages/status')).statusPage,
+};
 let leave: (() => void) | null = null;
+let visit = 0;
 
-function route(): void {
+async function route(): Promise<void> {
   const name = location.hash.replace('#', '') || 'bus';
-  const page = pages[name] ?? busPage;
+  const load = pages[name] ?? pages.bus;
+  const current = ++visit;
   leave?.();
+  leave = null;
   const root = document.getElementById('page')!;
   root.replaceChildren();
   root.dataset.page = name;
   document.querySelectorAll<HTMLAnchorElement>('nav a').forEach((a) => a.classList.toggle('active', a.dataset.page === name));
-  leave = page(root);
+  const page = await load();
+  if (current === visit) leave = page(root);
 }
 
 async function heartbeat(): Promise<void> {
@@ -41,7 +48,7 @@ document.getElementById('claim')!.addEventListener('click', () =>
     await heartbeat();
     return { message: 'this console is the operator' };
   }));
-window.addEventListener('hashchange', route);
-route();
+window.addEventListener('hashchange', () => void route());
+void route();
 void heartbeat();
 setInterval(() => void heartbeat(), 1000);

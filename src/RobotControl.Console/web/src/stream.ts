@@ -1,9 +1,13 @@
 // One WebSocket to /api/stream: subscribe to signals, receive the rows recorded since the last frame.
-export interface Frame { t: number[]; v: number[][]; seq: number; serverMs: number }
+export interface Frame { t: number[]; v: number[][]; seq: number; id: number; serverMs: number }
 
 export class SignalStream {
   private socket: WebSocket | null = null;
   private names: string[] = [];
+  // Each subscription is numbered; the server echoes the number in every frame, so a frame still in flight from
+  // an earlier subscription is never read with the new names.
+  private id = 0;
+  private readonly sent = new Map<number, string[]>();
   private closed = false;
 
   constructor(private readonly onFrame: (names: string[], frame: Frame) => void, private readonly rateHz = 60) {
@@ -13,8 +17,15 @@ export class SignalStream {
   subscribe(names: string[]): void {
     this.names = [...names];
     if (this.socket?.readyState === WebSocket.OPEN) {
-      this.socket.send(JSON.stringify({ subscribe: this.names, rateHz: this.rateHz }));
+      this.send(this.socket);
     }
+  }
+
+  private send(socket: WebSocket): void {
+    this.id += 1;
+    this.sent.clear();
+    this.sent.set(this.id, this.names);
+    socket.send(JSON.stringify({ subscribe: this.names, rateHz: this.rateHz, id: this.id }));
   }
 
   close(): void {
@@ -26,11 +37,12 @@ export class SignalStream {
     const url = `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/api/stream`;
     const socket = new WebSocket(url);
     this.socket = socket;
-    socket.onopen = () => socket.send(JSON.stringify({ subscribe: this.names, rateHz: this.rateHz }));
+    socket.onopen = () => this.send(socket);
     socket.onmessage = (e) => {
       const message = JSON.parse(e.data as string);
-      if (Array.isArray(message.t)) {
-        this.onFrame(this.names, message as Frame);
+      const names = Array.isArray(message.t) ? this.sent.get((message as Frame).id) : undefined;
+      if (names) {
+        this.onFrame(names, message as Frame);
       }
     };
     socket.onclose = () => {
