@@ -372,16 +372,7 @@ public sealed partial class HeadlessSession : IConsoleSession
 
     private SessionStatus BuildStatus()
     {
-        long frames = 0, crc = 0, timeouts = 0, retries = 0;
-        foreach (var c in _bus.Controllers)
-        {
-            var s = _bus.Client.Statistics(c.Id);
-            frames += s.FramesSent + s.FramesReceived;
-            crc += s.CrcErrors;
-            timeouts += s.Timeouts;
-            retries += s.Retries;
-        }
-
+        var totals = _bus.Client.Totals(_bus.Controllers.Select(c => c.Id));
         var stats = _session.Loop.Statistics;
         var faults = _bus.Faults;
         var state = _state == "running" && _session.Node.Holding ? "holding (a plug-in faulted)" : _state;
@@ -407,7 +398,7 @@ public sealed partial class HeadlessSession : IConsoleSession
             TorqueOn,
             [.. faultNames],
             _session.Graph.Program.FaultCount,
-            new BusCounters(_bus.Cycles, frames, crc, timeouts, retries));
+            new BusCounters(_bus.Cycles, totals.Frames, totals.CrcErrors, totals.Timeouts, totals.Retries));
     }
 
     private void PublishControllers()

@@ -37,7 +37,7 @@ internal sealed class StaticAssets
             if (!_names.Contains(name))
             {
                 context.Response.StatusCode = StatusCodes.Status404NotFound;
-                await context.Response.WriteAsync("the console's front-end was not built (src/RobotControl.Console/web: npm ci && npm run build)").ConfigureAwait(false);
+                await context.Response.WriteAsync("the console's front-end was not built (src/RobotControl.Console/web: npm install && npm run build)").ConfigureAwait(false);
                 return;
             }
         }
