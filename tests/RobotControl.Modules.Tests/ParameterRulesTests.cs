@@ -1,6 +1,4 @@
-using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Robot.Bus;
 using RobotControl.Modules;
 
 namespace RobotControl.Modules.Tests;
@@ -43,22 +41,5 @@ public sealed class ParameterRulesTests
         Assert.Empty(ParameterRules.CheckMotor(Value, 0));
         values["pot_cal_count"] = 1;
         Assert.Contains("pot_cal_count 1", Assert.Single(ParameterRules.CheckMotor(Value, 0)), StringComparison.Ordinal);
-    }
-
-    [Fact]
-    public void A_refused_torque_names_the_watchdog_only_when_it_is_latched()
-    {
-        var refused = new Reply(ReplyOutcome.Ok, 0x04);
-
-        var latched = TorqueRefusal.Describe(1, "m", true, refused, refused, (HardwareErrors.BusWatchdog, 0));
-        var other = TorqueRefusal.Describe(1, "m", true, refused, refused, (HardwareErrors.OverCurrent, 0));
-        var none = TorqueRefusal.Describe(1, "m", true, refused, refused, (HardwareErrors.None, 0));
-        var silent = TorqueRefusal.Describe(1, "m", true, Reply.TimedOut, Reply.TimedOut, null);
-
-        Assert.Contains("watchdog error is latched", latched, StringComparison.Ordinal);
-        Assert.DoesNotContain("watchdog error", other, StringComparison.Ordinal);
-        Assert.Contains("over_current", other, StringComparison.Ordinal);
-        Assert.Contains("without a latched error", none, StringComparison.Ordinal);
-        Assert.Contains("does not answer", silent, StringComparison.Ordinal);
     }
 }

@@ -58,7 +58,7 @@ internal sealed class LoopBench : IBenchCommand
             ("module resets", "reset=right.shoulder@5s,reset=left.forearm@12s"),
             ("bit errors 1e-4 + resets", "ber=1e-4,reset=right.shoulder@5s,reset=left.upper_arm@9s,reset=left.forearm@12s"),
         };
-        var tracking = scenarios.Select(s => (s.Name, s.Inject, Report: HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration, Inject = FaultInjection.Parse(s.Inject) }, catalog))).ToList();
+        var tracking = scenarios.Select(s => (s.Name, s.Inject, Report: HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration, Inject = FaultInjection.Parse(s.Inject), ContinueOnFault = true }, catalog))).ToList();
 
         var md = new StringBuilder();
         md.AppendLine("# Control loop: tick cost, allocations, latency, tracking");

@@ -81,6 +81,11 @@ public sealed partial class BusClient
         var sentAt = Send(FrameConstants.BroadcastId, Instruction.FastBulkRead, p, countStatistics: false);
         var deadline = sentAt + Ticks(WireTime(FrameConstants.Overhead + p.Length + packet)) + (ids.Length * Ticks(_options.ResponseMargin));
         var answered = ReceiveFastPacket(ids, lengths, data, replies, sentAt, deadline, packet - 7);
+        if (answered < ids.Length)
+        {
+            QuietAfterTimeout(); // the rest of the packet may still be on its way
+        }
+
         return answered + AskMissing(address, ids, lengths, data, replies, answered);
     }
 

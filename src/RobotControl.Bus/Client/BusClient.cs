@@ -8,6 +8,17 @@ namespace RobotControl.Bus.Client;
 /// The host end of the module bus: Dynamixel-2.0 requests with timeouts and retries, sync write / sync read for the
 /// per-cycle exchange, broadcast discovery and per-module statistics. Time comes from the given
 /// <see cref="TimeProvider"/>. After construction no request allocates. One thread uses a client at a time.
+/// <para>
+/// A late reply is never taken for a new one. Before each request the bytes already received are drained and every
+/// status frame among them is counted as late (<see cref="LateReplies"/>, per module in
+/// <see cref="ModuleStatistics.LateReplies"/>), apart from real CRC errors. While waiting, a reply is taken only from
+/// the module asked and only with the length the request calls for (or an error status); any other status frame is
+/// counted as late and the wait goes on. Each transaction's timeout is its wire time (request and reply) plus
+/// <see cref="BusClientOptions.ResponseMargin"/>, the module turnaround and scheduling margin. After a reply has timed
+/// out, the next request waits one more margin first, draining: a reply that is only a little late (the common case
+/// on a loaded host) is then counted as late instead of arriving inside the next request's window, where a reply of
+/// the same module and length could not be told from the right one (status packets carry no request number).
+/// </para>
 /// </summary>
 public sealed partial class BusClient : IDisposable
 {
@@ -16,6 +27,7 @@ public sealed partial class BusClient : IDisposable
     private readonly TimeProvider _time;
     private readonly BusClientOptions _options;
     private readonly FrameDecoder _decoder = new();
+    private readonly FrameDecoder _lateDecoder = new();
     private readonly byte[] _tx = new byte[FrameConstants.MaxFrameSize * 2];
     private readonly byte[] _rx = new byte[512];
     private readonly byte[] _params = new byte[FrameConstants.MaxFrameSize];
@@ -23,6 +35,8 @@ public sealed partial class BusClient : IDisposable
     private int _rxCount;
     private int _rxUsed;
     private long _strayFrames;
+    private long _lateReplies;
+    private long _quietUntil;
     private long _wireFreeAt;
 
     /// <summary>
@@ -62,8 +76,14 @@ public sealed partial class BusClient : IDisposable
     /// <summary>Frames dropped by the decoder because of a bad CRC (all modules).</summary>
     public long CrcErrors => _decoder.CrcErrors;
 
-    /// <summary>Valid frames that nobody asked for (wrong ID, late replies).</summary>
+    /// <summary>Valid frames that are not status replies (nobody asked for them).</summary>
     public long StrayFrames => _strayFrames;
+
+    /// <summary>
+    /// Status frames that arrived after their request had been given up on, or that answered another request than
+    /// the one waited for (all modules). None of them was taken as a reply.
+    /// </summary>
+    public long LateReplies => Volatile.Read(ref _lateReplies);
 
     /// <summary>Counters of one module.</summary>
     public ModuleStatistics Statistics(byte id) => _stats[id];
@@ -232,9 +252,15 @@ public sealed partial class BusClient : IDisposable
         while (answered < ids.Length && NextFrame(deadline))
         {
             var index = ids.IndexOf(_decoder.Id);
-            if (index < 0 || !_decoder.IsStatus || replies[index].Outcome == ReplyOutcome.Ok)
+            if (!_decoder.IsStatus)
             {
                 _strayFrames++;
+                continue;
+            }
+
+            if (index < 0 || replies[index].Outcome == ReplyOutcome.Ok || (_decoder.Parameters.Length != length && (_decoder.Error & 0x7F) == 0))
+            {
+                Late(_decoder.Id);
                 continue;
             }
 
@@ -247,7 +273,7 @@ public sealed partial class BusClient : IDisposable
 
             if (_decoder.Parameters.Length != length)
             {
-                replies[index] = new Reply(ReplyOutcome.BadLength, _decoder.Error);
+                replies[index] = new Reply(ReplyOutcome.BadLength, _decoder.Error); // an error status without data
                 continue;
             }
 
@@ -257,6 +283,11 @@ public sealed partial class BusClient : IDisposable
         }
 
         // Ask the missing ones individually.
+        if (answered < ids.Length)
+        {
+            QuietAfterTimeout();
+        }
+
         for (var i = 0; i < ids.Length && answered < ids.Length; i++)
         {
             if (replies[i].Outcome == ReplyOutcome.Ok)
@@ -292,11 +323,21 @@ public sealed partial class BusClient : IDisposable
             var crcBefore = _decoder.CrcErrors;
             var sentAt = Send(id, instruction, parameters);
             var deadline = sentAt + Ticks(WireTime(requestBytes + replyBytes) + _options.ResponseMargin);
+            var wrongLength = false;
             while (NextFrame(deadline))
             {
-                if (_decoder.Id != id || !_decoder.IsStatus)
+                if (!_decoder.IsStatus)
                 {
                     _strayFrames++;
+                    continue;
+                }
+
+                // Dynamixel 2.0 status packets carry no request number: the reply to this request is the one from
+                // this module with this request's reply length (or an error status, which has no data).
+                if (_decoder.Id != id || (_decoder.Parameters.Length != replyParameterCount && (_decoder.Error & 0x7F) == 0))
+                {
+                    wrongLength |= _decoder.Id == id;
+                    Late(_decoder.Id);
                     continue;
                 }
 
@@ -306,9 +347,13 @@ public sealed partial class BusClient : IDisposable
                     stats.ErrorReply();
                 }
 
-                return _decoder.Parameters.Length == replyParameterCount || (_decoder.Error & 0x7F) != 0
-                    ? new Reply(ReplyOutcome.Ok, _decoder.Error)
-                    : new Reply(ReplyOutcome.BadLength, _decoder.Error);
+                return new Reply(ReplyOutcome.Ok, _decoder.Error);
+            }
+
+            if (wrongLength && attempt >= _options.Retries)
+            {
+                stats.Timeout();
+                return new Reply(ReplyOutcome.BadLength, 0); // the module answered, but never with this request's length
             }
 
             if (_decoder.CrcErrors != crcBefore)
@@ -316,6 +361,7 @@ public sealed partial class BusClient : IDisposable
                 stats.CrcError();
             }
 
+            QuietAfterTimeout();
             stats.Timeout();
             if (attempt >= _options.Retries)
             {
@@ -329,9 +375,9 @@ public sealed partial class BusClient : IDisposable
     /// <summary>Sends a frame; returns the timestamp at which it starts on the wire.</summary>
     private long Send(byte id, Instruction instruction, ReadOnlySpan<byte> parameters, bool countStatistics = true)
     {
-        // Forget anything half-received: a late reply must not be taken for the answer to this request.
-        _decoder.Reset();
-        _rxCount = _rxUsed = 0;
+        // Anything received before the request answers an earlier one: drain it (counting the late replies in it)
+        // so that it cannot be taken for the answer to this request.
+        DrainLate();
         var n = FrameEncoder.EncodeInstruction(_tx, id, instruction, parameters);
 
         // A write returns once the bytes are queued; the frame starts on the wire when the ones before it are out,
@@ -345,6 +391,63 @@ public sealed partial class BusClient : IDisposable
         }
 
         return now;
+    }
+
+    /// <summary>
+    /// Takes every byte received so far (buffered here, or waiting in the link) without waiting, and counts the status
+    /// frames among them as late replies. The main decoder starts the next request clean; a partial frame left over
+    /// is dropped (its CRC is never checked, so it is not counted as a CRC error).
+    /// </summary>
+    private void DrainLate()
+    {
+        _lateDecoder.Reset();
+        CountLate(_rx.AsSpan(_rxUsed, _rxCount - _rxUsed));
+        int n;
+        while ((n = _link.Read(_rx, TimeSpan.Zero)) > 0)
+        {
+            CountLate(_rx.AsSpan(0, n));
+        }
+
+        for (var wait = _quietUntil - _time.GetTimestamp(); wait > 0; wait = _quietUntil - _time.GetTimestamp())
+        {
+            n = _link.Read(_rx, TimeSpan.FromTicks(wait * TimeSpan.TicksPerSecond / _time.TimestampFrequency));
+            CountLate(_rx.AsSpan(0, n));
+        }
+
+        _quietUntil = 0;
+
+        _decoder.Reset();
+        _rxCount = _rxUsed = 0;
+    }
+
+    private void CountLate(ReadOnlySpan<byte> bytes)
+    {
+        while (!bytes.IsEmpty)
+        {
+            if (!_lateDecoder.Push(bytes, out var used))
+            {
+                return;
+            }
+
+            bytes = bytes[used..];
+            if (_lateDecoder.IsStatus)
+            {
+                Late(_lateDecoder.Id);
+            }
+            else
+            {
+                _strayFrames++;
+            }
+        }
+    }
+
+    /// <summary>A reply timed out: it may still come, so the next request first waits one more margin, draining.</summary>
+    private void QuietAfterTimeout() => _quietUntil = _time.GetTimestamp() + Ticks(_options.ResponseMargin);
+
+    private void Late(byte id)
+    {
+        Interlocked.Increment(ref _lateReplies);
+        _stats[id].LateReply();
     }
 
     /// <summary>Reads until the decoder yields a frame or the deadline (a timestamp) passes.</summary>

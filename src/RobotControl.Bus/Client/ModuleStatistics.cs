@@ -12,6 +12,7 @@ public sealed class ModuleStatistics
     private long _timeouts;
     private long _retries;
     private long _errorReplies;
+    private long _lateReplies;
     private long _latencyTicksSum;
     private long _latencyCount;
     private long _latencyTicksMax;
@@ -44,6 +45,9 @@ public sealed class ModuleStatistics
     /// <summary>Replies whose error byte was non-zero.</summary>
     public long ErrorReplies => Volatile.Read(ref _errorReplies);
 
+    /// <summary>Status frames from this module that came after their request was given up on, or answered another request.</summary>
+    public long LateReplies => Volatile.Read(ref _lateReplies);
+
     /// <summary>Mean request-to-reply latency.</summary>
     public TimeSpan MeanLatency
     {
@@ -64,7 +68,7 @@ public sealed class ModuleStatistics
 
     /// <inheritdoc />
     public override string ToString() =>
-        $"id {Id}: sent {FramesSent}, received {FramesReceived}, crc errors {CrcErrors}, timeouts {Timeouts}, retries {Retries}, error replies {ErrorReplies}, latency mean {MeanLatency.TotalMicroseconds:F0} us max {MaxLatency.TotalMicroseconds:F0} us";
+        $"id {Id}: sent {FramesSent}, received {FramesReceived}, crc errors {CrcErrors}, timeouts {Timeouts}, retries {Retries}, late replies {LateReplies}, error replies {ErrorReplies}, latency mean {MeanLatency.TotalMicroseconds:F0} us max {MaxLatency.TotalMicroseconds:F0} us";
 
     internal void Sent() => Interlocked.Increment(ref _framesSent);
 
@@ -87,6 +91,8 @@ public sealed class ModuleStatistics
     internal void Retry() => Interlocked.Increment(ref _retries);
 
     internal void ErrorReply() => Interlocked.Increment(ref _errorReplies);
+
+    internal void LateReply() => Interlocked.Increment(ref _lateReplies);
 
     private TimeSpan ToTimeSpan(long ticks) => TimeSpan.FromTicks(ticks * TimeSpan.TicksPerSecond / TimestampFrequency);
 }

@@ -24,11 +24,14 @@ public static class LinkFactory
         switch (uri.Kind)
         {
             case LinkKind.Serial:
+                _ = LatencyTimer.TrySetOneMs(uri.Target, sysRoot); // USB-serial adapters: 1 ms, not the default 16
                 return SerialLink.Open(uri.Target, uri.BaudRate, uri.Parity, uri.Rs485);
             case LinkKind.Usb:
                 // A USB-RS485 adapter is a serial device once found: same link, same options.
                 var (vendor, product, serial) = uri.UsbIds();
-                return SerialLink.Open(UsbSerialResolver.Resolve(vendor, product, serial, sysRoot, devRoot), uri.BaudRate, uri.Parity, uri.Rs485);
+                var device = UsbSerialResolver.Resolve(vendor, product, serial, sysRoot, devRoot);
+                _ = LatencyTimer.TrySetOneMs(device, sysRoot);
+                return SerialLink.Open(device, uri.BaudRate, uri.Parity, uri.Rs485);
             case LinkKind.Tcp:
                 var (host, port) = uri.TcpEndpoint();
                 return TcpLink.Connect(host, port, uri.BaudRate, TimeSpan.FromSeconds(3));

@@ -158,10 +158,6 @@ public sealed partial class HeadlessSession : IConsoleSession
                 RunRealTime();
             }
         }
-        catch (OperationCanceledException) when (_stop.IsCancellationRequested)
-        {
-            // Disposed: the session ends here.
-        }
 #pragma warning disable CA1031 // the session thread reports what ended it in the status and the event log
         catch (Exception ex)
 #pragma warning restore CA1031
@@ -187,7 +183,6 @@ public sealed partial class HeadlessSession : IConsoleSession
         _session.RunVirtual(long.MaxValue, () =>
         {
             _busTiming.Record(Stopwatch.GetTimestamp() - cycleBegin);
-            _stop.Token.ThrowIfCancellationRequested();
             Between(ref nextPublish, ref nextPoll);
             var ahead = Now - wall.Elapsed.TotalSeconds;
             if (ahead > 0.002)
@@ -196,7 +191,7 @@ public sealed partial class HeadlessSession : IConsoleSession
             }
 
             cycleBegin = Stopwatch.GetTimestamp();
-        }, StepCountingAllocations);
+        }, StepCountingAllocations, () => _stop.IsCancellationRequested);
     }
 
     /// <summary>One loop tick (the loop plus the ring recorder), counting what it allocates on this thread.</summary>

@@ -1,6 +1,7 @@
 using System.Globalization;
 using RobotControl.Bus.Transports;
 using RobotControl.Hardware.Model;
+using RobotControl.Host.Realtime;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Robot.Bus;
@@ -22,6 +23,8 @@ namespace RobotControl.Host.Harness;
 /// </summary>
 public static class HeadlessRun
 {
+    private static readonly TimeSpan PollInterval = TimeSpan.FromMilliseconds(10);
+
     /// <summary>Runs <paramref name="options"/> with plug-in types from <paramref name="catalog"/>.</summary>
     /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
     /// <exception cref="InvalidOperationException">The graph names no robot, or the robot cannot be brought up.</exception>
@@ -29,7 +32,7 @@ public static class HeadlessRun
     {
         ArgumentNullException.ThrowIfNull(options);
         ArgumentNullException.ThrowIfNull(catalog);
-        return options.Virtual ? RunVirtual(options, catalog, progress, null) : RunRealTime(options, catalog, progress);
+        return options.Virtual ? RunVirtual(options, catalog, progress, null) : RunRealTime(options, catalog, progress, null);
     }
 
     /// <summary>A virtual run with measurement hooks (benchmarks): a wrapper around the bus link, and one around each tick.</summary>
@@ -73,6 +76,7 @@ public static class HeadlessRun
         var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
         var reported = 0L;
+        var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
         session.RunVirtual(
             ticks,
             () =>
@@ -98,10 +102,12 @@ public static class HeadlessRun
                 }
 
                 safetyFaults.AfterTick(at);
-            });
+            },
+            stopper.ShouldStop);
         hooks?.AfterRun?.Invoke(session);
-        DrainEvents(bus, clock.GetElapsedTime(begin), faults);
-        return Report(loop, meter!, clock.GetElapsedTime(begin), session, faults);
+        var elapsed = clock.GetElapsedTime(begin);
+        var check = session.Stop();
+        return Finish(stopper, check, loop, meter!, elapsed, session, faults);
     }
 
     /// <summary>The link wrapper for <c>silent=</c> faults (outermost: a measuring wrapper sees what the host sees), or <paramref name="wrap"/> alone without one.</summary>
@@ -127,7 +133,10 @@ public static class HeadlessRun
         supervisor.PedalDown("harness");
     }
 
-    private static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress)
+    /// <summary>A real-time run with measurement hooks (benchmarks): a wrapper around the bus link, and one call after the run.</summary>
+    internal static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, VirtualRunHooks hooks) => RunRealTime(options, catalog, null, hooks);
+
+    private static RunReport RunRealTime(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
     {
         if (!options.Inject.IsNone)
         {
@@ -136,37 +145,66 @@ public static class HeadlessRun
 
         TrackingMeter? meter = null;
         using var session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Virtual = false, SettingOverrides = options.SettingOverrides, Observer = (node, port) => Meter(node, port, out meter) },
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = false, Transport = options.Transport, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
             catalog);
         var bus = session.Robot;
         var loop = session.Loop;
         var clock = session.Clock;
         var faults = new List<FaultEntry>();
         DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
+        var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
+        var nextProgress = options.ProgressInterval;
+        StopCheck check;
+        var threads = options.Threads ?? RealtimeThreads.Default;
+        session.StartRealtime(threads); // warm-up, homing, motors on: the run's time starts when the threads do
         var begin = clock.GetTimestamp();
         PressPedal(session.Supervisor, begin);
-        session.StartRealtime();
         try
         {
-            while (clock.GetElapsedTime(begin) < options.Duration && loop.ThreadFailure is null)
+            while (clock.GetElapsedTime(begin) < options.Duration && loop.ThreadFailure is null && !stopper.ShouldStop())
             {
-                Thread.Sleep(options.ProgressInterval < options.Duration ? options.ProgressInterval : options.Duration);
-                DrainEvents(bus, clock.GetElapsedTime(begin), faults);
-                progress?.Invoke(Progress(loop, meter!, clock.GetElapsedTime(begin), options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
+                // Short sleeps: a fault or a stop request is acted on within a few milliseconds.
+                Thread.Sleep(PollInterval);
+                var now = clock.GetElapsedTime(begin);
+                if (now >= nextProgress || now >= options.Duration)
+                {
+                    nextProgress += options.ProgressInterval;
+                    DrainEvents(bus, now, faults);
+                    progress?.Invoke(Progress(loop, meter!, now, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
+                }
             }
         }
         finally
         {
-            session.Stop();
+            hooks?.AfterRun?.Invoke(session);
+            check = session.Stop();
         }
 
+        var elapsed = clock.GetElapsedTime(begin);
         if (loop.ThreadFailure is { } failure)
         {
-            faults.Add(new FaultEntry(clock.GetElapsedTime(begin).TotalSeconds, "harness", $"control loop failed: {failure.Message}"));
+            faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"control loop failed: {failure.Message}"));
         }
 
-        DrainEvents(bus, clock.GetElapsedTime(begin), faults);
-        return Report(loop, meter!, clock.GetElapsedTime(begin), session, faults);
+        return Finish(stopper, check, loop, meter!, elapsed, session, faults) with { Scheduling = threads.Outcome };
+    }
+
+    /// <summary>The report, with how the run ended and what the modules said after the motors were switched off.</summary>
+    private static RunReport Finish(FaultStop stopper, StopCheck check, ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, List<FaultEntry> faults)
+    {
+        var bus = session.Robot;
+        DrainEvents(bus, elapsed, faults);
+        if (stopper.Fault is { } fault)
+        {
+            faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"robot fault, run stopped commanding: {fault}"));
+        }
+
+        if (!check.TorqueOff)
+        {
+            faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"after the stop, torque still on at module(s) [{string.Join(", ", check.TorqueOn)}], no answer from [{string.Join(", ", check.Unreachable)}]"));
+        }
+
+        return Report(loop, meter, elapsed, session, faults) with { Interrupted = stopper.Interrupted, StoppedOnFault = stopper.Fault, Stop = check };
     }
 
     private static TrackingMeter Meter(RobotNode node, IRobotPort port, out TrackingMeter meter) => meter = new TrackingMeter(node, port);
@@ -198,7 +236,7 @@ public static class HeadlessRun
             stats.MaxUs,
             meter.RmsMm,
             meter.MaxMm,
-            new BusReport(totals.Frames, totals.CrcErrors, totals.Timeouts, totals.Retries),
+            new BusReport(totals.Frames, totals.CrcErrors, totals.Timeouts, totals.Retries, bus.Client.LateReplies),
             all,
             SafetyReport.Of(session.Supervisor));
     }

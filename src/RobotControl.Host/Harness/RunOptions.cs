@@ -12,6 +12,21 @@ public sealed record RunOptions
     /// </summary>
     public bool Virtual { get; init; } = true;
 
+    /// <summary>The transport to open instead of the graph's (real-time runs; null: the graph's).</summary>
+    public string? Transport { get; init; }
+
+    /// <summary>
+    /// False (the default): when the robot faults (a module stops its motors, stops answering, loses its position)
+    /// the run stops commanding, switches the motors off and reports the fault. True: the run goes on.
+    /// </summary>
+    public bool ContinueOnFault { get; init; }
+
+    /// <summary>Cancelled to stop the run early (Ctrl+C, SIGTERM): the report is then marked interrupted.</summary>
+    public CancellationToken Stop { get; init; }
+
+    /// <summary>Scheduling of the real-time threads (priority, CPU); null: normal.</summary>
+    public Realtime.RealtimeThreads? Threads { get; init; }
+
     /// <summary>Loop time to run.</summary>
     public TimeSpan Duration { get; init; } = TimeSpan.FromSeconds(20);
 

@@ -1,13 +1,15 @@
 using System.Text;
 using System.Text.Json;
 using RobotControl.Host.Safety;
+using RobotControl.Host.Session;
 
 namespace RobotControl.Host.Harness;
 
 /// <summary>
 /// The outcome of a headless run, written as <c>report.json</c>:
 /// <c>{"duration_s", "ticks", "deadline_misses", "tick_us": {"median", "p99", "max"}, "tracking_error_mm": {"rms",
-/// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries"}, "faults": [...], "safety": {...}}</c>
+/// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries", "late_replies"}, "faults": [...], "interrupted", "stopped_on_fault",
+/// "scheduling" (real time), "stop": {"modules", "torque_off", "torque_on", "latched_errors", "unreachable"}}, "safety": {...}}</c>
 /// (<see cref="SafetyReport"/>).
 /// </summary>
 /// <param name="DurationSeconds">Loop time covered, seconds.</param>
@@ -34,6 +36,18 @@ public sealed record RunReport(
     IReadOnlyList<FaultEntry> Faults,
     SafetyReport? Safety = null)
 {
+    /// <summary>True when the run was stopped early by a request (Ctrl+C, SIGTERM).</summary>
+    public bool Interrupted { get; init; }
+
+    /// <summary>The robot fault that stopped the run (null: none did).</summary>
+    public string? StoppedOnFault { get; init; }
+
+    /// <summary>The modules read back after the motors were switched off (null: not checked).</summary>
+    public StopCheck? Stop { get; init; }
+
+    /// <summary>How the real-time threads were scheduled (null: a virtual run).</summary>
+    public string? Scheduling { get; init; }
+
     /// <summary>The report as JSON in the documented schema.</summary>
     public string ToJson()
     {
@@ -58,6 +72,7 @@ public sealed record RunReport(
             w.WriteNumber("crc_errors", Bus.CrcErrors);
             w.WriteNumber("timeouts", Bus.Timeouts);
             w.WriteNumber("retries", Bus.Retries);
+            w.WriteNumber("late_replies", Bus.LateReplies);
             w.WriteEndObject();
             w.WriteStartArray("faults");
             foreach (var f in Faults)
@@ -70,11 +85,40 @@ public sealed record RunReport(
             }
 
             w.WriteEndArray();
+            w.WriteBoolean("interrupted", Interrupted);
+            w.WriteString("stopped_on_fault", StoppedOnFault);
+            if (Scheduling is not null)
+            {
+                w.WriteString("scheduling", Scheduling);
+            }
+
+            if (Stop is { } stop)
+            {
+                w.WriteStartObject("stop");
+                w.WriteNumber("modules", stop.Modules);
+                w.WriteBoolean("torque_off", stop.TorqueOff);
+                WriteList(w, "torque_on", stop.TorqueOn);
+                WriteList(w, "latched_errors", stop.LatchedErrors);
+                WriteList(w, "unreachable", stop.Unreachable);
+                w.WriteEndObject();
+            }
+
             Safety?.Write(w);
             w.WriteEndObject();
         }
 
         return Encoding.UTF8.GetString(stream.ToArray()) + Environment.NewLine;
+    }
+
+    private static void WriteList(Utf8JsonWriter w, string name, IReadOnlyList<string> items)
+    {
+        w.WriteStartArray(name);
+        foreach (var item in items)
+        {
+            w.WriteStringValue(item);
+        }
+
+        w.WriteEndArray();
     }
 }
 
@@ -83,7 +127,8 @@ public sealed record RunReport(
 /// <param name="CrcErrors">Replies dropped for a bad CRC.</param>
 /// <param name="Timeouts">Replies that did not arrive in time.</param>
 /// <param name="Retries">Requests sent again.</param>
-public sealed record BusReport(long Frames, long CrcErrors, long Timeouts, long Retries);
+/// <param name="LateReplies">Status frames that came after their request was given up on (none taken as a reply).</param>
+public sealed record BusReport(long Frames, long CrcErrors, long Timeouts, long Retries, long LateReplies = 0);
 
 /// <summary>One fault in a run.</summary>
 /// <param name="TimeSeconds">Run time, seconds (when known; otherwise the end of the run).</param>

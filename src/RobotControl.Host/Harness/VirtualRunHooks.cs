@@ -4,7 +4,7 @@ using RobotControl.Runtime.Loop;
 
 namespace RobotControl.Host.Harness;
 
-/// <summary>Measurement hooks into a virtual run (benchmarks).</summary>
+/// <summary>Measurement hooks into a run (benchmarks, tests); <see cref="AroundTick"/> applies to virtual runs only.</summary>
 internal sealed record VirtualRunHooks
 {
     /// <summary>Wraps the host's end of the virtual bus (e.g. to timestamp frames); gets the link and the virtual bus clock.</summary>

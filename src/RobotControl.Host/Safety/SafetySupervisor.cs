@@ -1,3 +1,4 @@
+using System.Globalization;
 using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
@@ -35,7 +36,6 @@ public sealed class SafetySupervisor
     private readonly long _silentTicks;
     private readonly long _stallTicks;
     private long _lastCycle;
-    private bool _poweredLastCycle;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
 
@@ -100,6 +100,9 @@ public sealed class SafetySupervisor
     /// <summary>The robot layer supervised.</summary>
     public BusRobot Robot => _robot;
 
+    /// <summary>True once a trip has switched the motors off (until the next <see cref="Home"/>): the arms cannot move.</summary>
+    public bool MotorsTrippedOff => _torqueOffTaken;
+
     /// <summary>Seconds from <see cref="Origin"/> to <paramref name="timestamp"/> (negative before it).</summary>
     public double Seconds(long timestamp) => (timestamp - Origin) / (double)_time.TimestampFrequency;
 
@@ -114,6 +117,15 @@ public sealed class SafetySupervisor
     /// <exception cref="InvalidOperationException">Not at INIT, or homing incomplete (the message says how many motors failed).</exception>
     public IReadOnlyList<HomingResult> Home(string source)
     {
+        if (Level == RunLevel.EStop)
+        {
+            var trips = Trips;
+            var trip = trips.Count > 0 ? trips[0] : null;
+            throw new InvalidOperationException(trip is null
+                ? $"homing ({source}) refused: the run level is E_STOP; an operator reset comes first"
+                : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");
+        }
+
         _levels.MoveTo(RunLevel.Homing, source, "homing from the joint pots");
         _robot.HoldAtMeasured();
         if (_robot.State == RobotState.Enabled)
@@ -257,22 +269,23 @@ public sealed class SafetySupervisor
     /// <summary>The per-cycle checks (the robot's <see cref="BusRobot.AfterUpdate"/>).</summary>
     private void CheckCycle()
     {
+        if (Level == RunLevel.Init)
+        {
+            _lastCycle = 0;
+            return; // motors off and nothing commanded: the checks start with homing
+        }
+
         var now = _time.GetTimestamp();
         var gap = _lastCycle == 0 ? 0 : now - _lastCycle;
-        _lastCycle = now;
-
-        // A stalled bus or a silent module matters while the motors are powered; with them off (INIT, E_STOP: e.g.
-        // rediscovery or a module reboot from the console) nothing is being controlled, so a gap counts only when the
-        // motors were powered at the cycle before it too, and silence counts from power-up.
-        var powered = _robot.State is RobotState.Enabled or RobotState.Homing or RobotState.Fault;
-        var poweredBefore = _poweredLastCycle;
-        _poweredLastCycle = powered;
-        if (powered && poweredBefore && gap > _stallTicks)
+        // Cycles are timed only while the motors hold or follow teleoperation (PEDAL_UP, PEDAL_DOWN): set-up and
+        // homing run the bus at their own pace (first calls, homing moves), with the motors off or firmware-driven.
+        _lastCycle = Level is RunLevel.PedalUp or RunLevel.PedalDown ? now : 0;
+        if (gap > _stallTicks)
         {
             Trip(SafetyCheck.DeadlineMiss, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
         }
 
-        CheckModules(now, powered);
+        CheckModules(now);
         if (_robot.State == RobotState.Fault)
         {
             Trip(SafetyCheck.ModuleFault, string.Empty, (double)_robot.Faults, 0, "fault flags", now);
@@ -290,12 +303,12 @@ public sealed class SafetySupervisor
         }
     }
 
-    private void CheckModules(long now, bool powered)
+    private void CheckModules(long now)
     {
         for (var i = 0; i < _controllers.Length; i++)
         {
             var c = _controllers[i];
-            if (!powered || c.MissedReplies == 0 || _answeredAt[i] == 0)
+            if (c.MissedReplies == 0 || _answeredAt[i] == 0)
             {
                 _answeredAt[i] = now;
             }

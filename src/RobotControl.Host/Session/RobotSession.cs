@@ -1,4 +1,5 @@
 using RobotControl.Bus.Transports;
+using RobotControl.Host.Realtime;
 using RobotControl.Host.Safety;
 using RobotControl.Robot.Bus;
 using RobotControl.Runtime.Discovery;
@@ -20,7 +21,11 @@ namespace RobotControl.Host.Session;
 public sealed class RobotSession : IDisposable
 {
     private readonly ManualTimeProvider? _loopClock;
+    /// <summary>How long the bus cycle runs, motors off, before the watchdogs are armed.</summary>
+    public static readonly TimeSpan WarmUp = TimeSpan.FromMilliseconds(300);
+
     private bool _running;
+    private StopCheck? _stopped;
 
     private RobotSession(LoadedGraph graph, RobotConnection connection, ManualTimeProvider? loopClock, DiscoveryReport discovery, ControlLoop loop, SafetySupervisor supervisor)
     {
@@ -90,7 +95,8 @@ public sealed class RobotSession : IDisposable
                 throw new InvalidOperationException($"the graph's transport is '{transport}': run it with --virtual, or name a serial, usb or tcp transport");
             }
 
-            connection = RobotConnection.OpenReal(LinkFactory.Open(transport), robot);
+            var link = LinkFactory.Open(transport);
+            connection = RobotConnection.OpenReal(options.WrapLink?.Invoke(link, TimeProvider.System) ?? link, robot);
         }
 
         try
@@ -98,7 +104,11 @@ public sealed class RobotSession : IDisposable
             var bus = connection.Robot!;
             var discovery = bus.Discover();
             var supervisor = new SafetySupervisor(bus, SafetySection.Load(robot.SourceFile), TimeSpan.FromSeconds(1.0 / loaded.Document.LoopRateHz));
-            supervisor.Home("session");
+            if (options.Virtual)
+            {
+                supervisor.Home("session"); // a real session homes and arms the modules in StartRealtime, once the cycle runs at rate
+            }
+
             loaded.RobotNode!.Attach(bus);
             var observer = options.Observer?.Invoke(loaded.RobotNode!, bus);
             var loop = new ControlLoop(loaded.Program, loopClock ?? TimeProvider.System, loaded.Document.LoopRateHz, observer);
@@ -142,49 +152,68 @@ public sealed class RobotSession : IDisposable
     /// <paramref name="afterCycle"/> runs after each bus cycle, <paramref name="aroundTick"/> (if given) runs each tick.
     /// </summary>
     /// <exception cref="InvalidOperationException">The session is not virtual, or already running.</exception>
-    public void RunVirtual(long ticks, Action? afterCycle = null, Action<ControlLoop, long>? aroundTick = null)
+    /// <param name="ticks">Ticks to run.</param>
+    /// <param name="afterCycle">Runs after each bus cycle (progress, events).</param>
+    /// <param name="aroundTick">Runs each tick instead of <see cref="ControlLoop.Step"/>.</param>
+    /// <param name="stopWhen">Checked after each bus cycle: true ends the run early (a stop request, a robot fault).</param>
+    public void RunVirtual(long ticks, Action? afterCycle = null, Action<ControlLoop, long>? aroundTick = null, Func<bool>? stopWhen = null)
     {
         if (_loopClock is null || Connection.VirtualClock is null)
         {
             throw new InvalidOperationException("RunVirtual needs a virtual session (SessionOptions.Virtual)");
         }
 
-        new VirtualSchedule(Robot, Connection.VirtualClock, _loopClock, Loop, ticks, aroundTick).Run(afterCycle);
+        new VirtualSchedule(Robot, Connection.VirtualClock, _loopClock, Loop, ticks, aroundTick).Run(afterCycle, stopWhen);
         Loop.Stop();
     }
 
-    /// <summary>Starts the bus thread and the loop thread (real bus, wall clock).</summary>
+    /// <summary>
+    /// Starts the bus thread and the loop thread (real bus, wall clock). The motors are still off: the bus cycle is
+    /// first run for <see cref="WarmUp"/> on this thread, and the stop's torque-off and read-back once (every path
+    /// JIT-compiled, buffers touched), so that the
+    /// modules' bus watchdogs are armed only when the cycle runs at rate; then the motors go on (watchdogs armed) and
+    /// the threads start straight away, with <paramref name="threads"/>' scheduling (priority, CPUs).
+    /// </summary>
     /// <exception cref="InvalidOperationException">The session is virtual, or already running.</exception>
-    public void StartRealtime()
+    /// <exception cref="IOException">A module refuses torque (e.g. a latched watchdog error).</exception>
+    public void StartRealtime(RealtimeThreads? threads = null)
     {
         if (IsVirtual || _running)
         {
             throw new InvalidOperationException(IsVirtual ? "a virtual session runs on its schedule (RunVirtual)" : "the session is running already");
         }
 
+        Robot.RunFor(WarmUp);
+        _ = StopCheck.TorqueOffAndVerify(Robot); // the stop's path too: compiled now, it cannot stall a stop past the watchdog
+        Supervisor.Home("session"); // INIT -> HOMING -> PEDAL_UP: motors on, watchdogs armed
         _running = true;
-        Robot.Start();
-        Loop.Start();
+        (threads ?? RealtimeThreads.Default).Start(() =>
+        {
+            Robot.Start();
+            Loop.Start();
+        });
     }
 
-    /// <summary>Stops the loop and the bus thread and turns the motors off (real bus).</summary>
-    public void Stop()
+    /// <summary>
+    /// Stops the loop and the bus thread (if running), switches the motors off on every module and reads them back;
+    /// the first call does it, later calls return its result.
+    /// </summary>
+    public StopCheck Stop()
     {
-        if (!_running)
+        if (_running)
         {
-            return;
+            _running = false;
+            Loop.Stop();
+            Robot.Stop();
         }
 
-        _running = false;
-        Loop.Stop();
-        Robot.Stop();
-        Robot.EnableTorque(false);
+        return _stopped ??= StopCheck.TorqueOffAndVerify(Robot);
     }
 
     /// <inheritdoc />
     public void Dispose()
     {
-        Stop();
+        _ = Stop();
         Loop.Dispose();
         Connection.Dispose();
     }

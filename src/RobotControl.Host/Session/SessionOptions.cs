@@ -19,7 +19,10 @@ public sealed record SessionOptions
     /// </summary>
     public bool Virtual { get; init; } = true;
 
-    /// <summary>A real session's transport instead of the graph's (serial, usb or tcp); null: the graph's.</summary>
+    /// <summary>
+    /// The transport to open instead of the graph's (<c>--transport</c>; null: the graph's). Check it with
+    /// <see cref="TransportOverride.Check"/> first. Ignored by a virtual session.
+    /// </summary>
     public string? Transport { get; init; }
 
     /// <summary>Seed of the virtual robot's random sources (noise, wire faults).</summary>

@@ -57,8 +57,11 @@ public sealed class VirtualSchedule
         _nextTick = now + _period;
     }
 
-    /// <summary>Runs cycles until every tick has run; <paramref name="afterCycle"/> runs after each (progress, events).</summary>
-    public void Run(Action? afterCycle = null)
+    /// <summary>
+    /// Runs cycles until every tick has run, or <paramref name="stopWhen"/> (checked after each cycle) says stop;
+    /// <paramref name="afterCycle"/> runs after each (progress, events).
+    /// </summary>
+    public void Run(Action? afterCycle = null, Func<bool>? stopWhen = null)
     {
         if (_loop.TickCount >= _ticks)
         {
@@ -73,7 +76,7 @@ public sealed class VirtualSchedule
             _robot.Update();
             TickDue();
             afterCycle?.Invoke();
-            if (_loop.TickCount >= _ticks)
+            if (_loop.TickCount >= _ticks || (stopWhen is not null && stopWhen()))
             {
                 return;
             }

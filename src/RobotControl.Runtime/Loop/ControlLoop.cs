@@ -128,7 +128,9 @@ public sealed class ControlLoop : IDisposable
                     break;
                 }
 
-                RunTick(_time.GetTimestamp());
+                var now = _time.GetTimestamp();
+                Statistics.RecordStartLag((now - _nextDue) * 1e6 / _time.TimestampFrequency);
+                RunTick(now);
             }
         }
 #pragma warning disable CA1031 // surfaced through ThreadFailure; the harness reports it
@@ -142,6 +144,17 @@ public sealed class ControlLoop : IDisposable
     private void WaitUntil(long due)
     {
         var frequency = _time.TimestampFrequency;
+        if (ReferenceEquals(_time, TimeProvider.System) && MonotonicSleep.Available)
+        {
+            // The system clock is the monotonic one: sleep to just before the deadline, then spin the last few
+            // microseconds. Sleeping (not spinning) keeps a SCHED_FIFO loop inside the kernel's real-time budget.
+            var spin = frequency / 50_000; // 20 us
+            while (!_stopRequested && due - _time.GetTimestamp() > spin)
+            {
+                MonotonicSleep.Until(due - spin);
+            }
+        }
+
         while (!_stopRequested)
         {
             var remaining = due - _time.GetTimestamp();

@@ -11,8 +11,12 @@ public sealed class TickStatistics
 {
     private const double BinUs = 0.1;
     private const int Bins = 100_000;
+    private const int LagBins = 100_000; // 1 us bins up to 100 ms
     private readonly int[] _histogram = new int[Bins + 1];
+    private readonly int[] _lagHistogram = new int[LagBins + 1];
     private long _count;
+    private long _lagCount;
+    private long _maxLagUs;
     private long _maxStopwatchTicks;
     private long _deadlineMisses;
 
@@ -43,6 +47,45 @@ public sealed class TickStatistics
         }
 
         Volatile.Write(ref _count, _count + 1);
+    }
+
+    /// <summary>Ticks whose start lag was recorded (ticks run on the loop's own thread).</summary>
+    public long StartLagCount => Volatile.Read(ref _lagCount);
+
+    /// <summary>Largest tick start lag (start after the tick was due, on the loop clock), microseconds.</summary>
+    public double StartLagMaxUs => Volatile.Read(ref _maxLagUs);
+
+    /// <summary>Records how late a tick started after it was due (the tick start jitter), microseconds.</summary>
+    public void RecordStartLag(double us)
+    {
+        var whole = (long)Math.Max(0, Math.Round(us));
+        _lagHistogram[(int)Math.Min(LagBins, whole)]++;
+        if (whole > _maxLagUs)
+        {
+            Volatile.Write(ref _maxLagUs, whole);
+        }
+
+        Volatile.Write(ref _lagCount, _lagCount + 1);
+    }
+
+    /// <summary>The <paramref name="fraction"/> quantile (0..1) of the tick start lag in microseconds (1 us bins; the max caps it).</summary>
+    public double StartLagPercentile(double fraction)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(fraction, 0.0);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(fraction, 1.0);
+        var count = StartLagCount;
+        var rank = Math.Max(1, (long)Math.Ceiling(fraction * count));
+        long seen = 0;
+        for (var bin = 0; bin <= LagBins && count > 0; bin++)
+        {
+            seen += _lagHistogram[bin];
+            if (seen >= rank)
+            {
+                return Math.Min(StartLagMaxUs, bin);
+            }
+        }
+
+        return StartLagMaxUs;
     }
 
     /// <summary>Counts missed deadlines.</summary>

@@ -37,7 +37,7 @@ public sealed class RobotSessionTests
     public void A_virtual_session_refuses_to_start_real_threads()
     {
         using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
-        Assert.Throws<InvalidOperationException>(session.StartRealtime);
+        Assert.Throws<InvalidOperationException>(() => session.StartRealtime());
     }
 
     [Fact]

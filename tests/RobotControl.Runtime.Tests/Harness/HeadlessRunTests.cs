@@ -30,14 +30,14 @@ public sealed class HeadlessRunTests
     [Fact]
     public void The_report_has_the_documented_schema()
     {
-        var json = new RunReport(1, 2, 3, 4, 5, 6, 7, 8, new BusReport(9, 10, 11, 12), [new FaultEntry(0.5, "robot", "module 1 reset")]).ToJson();
+        var json = new RunReport(1, 2, 3, 4, 5, 6, 7, 8, new BusReport(9, 10, 11, 12, 13), [new FaultEntry(0.5, "robot", "module 1 reset")]).ToJson();
         using var doc = System.Text.Json.JsonDocument.Parse(json);
         var root = doc.RootElement;
 
-        Assert.Equal(["duration_s", "ticks", "deadline_misses", "tick_us", "tracking_error_mm", "bus", "faults"], root.EnumerateObject().Select(p => p.Name));
+        Assert.Equal(["duration_s", "ticks", "deadline_misses", "tick_us", "tracking_error_mm", "bus", "faults", "interrupted", "stopped_on_fault"], root.EnumerateObject().Select(p => p.Name));
         Assert.Equal(["median", "p99", "max"], root.GetProperty("tick_us").EnumerateObject().Select(p => p.Name));
         Assert.Equal(["rms", "max"], root.GetProperty("tracking_error_mm").EnumerateObject().Select(p => p.Name));
-        Assert.Equal(["frames", "crc_errors", "timeouts", "retries"], root.GetProperty("bus").EnumerateObject().Select(p => p.Name));
+        Assert.Equal(["frames", "crc_errors", "timeouts", "retries", "late_replies"], root.GetProperty("bus").EnumerateObject().Select(p => p.Name));
         Assert.Equal("module 1 reset", root.GetProperty("faults")[0].GetProperty("message").GetString());
     }
 

@@ -4,7 +4,8 @@ namespace RobotControl.Cli.Commands.Bus;
 
 /// <summary>
 /// <c>robotctl discover &lt;transport&gt; [--robot file]</c>: broadcast-pings the bus; with a robot file, reports
-/// missing, unknown and mismatched modules and parameters that differ from the file. Exit 1 when anything differs.
+/// missing, unknown and mismatched modules and parameters that differ from the file; <c>--clear-faults</c> names and
+/// clears latched module errors. Exit 1 when anything differs.
 /// </summary>
 internal sealed class DiscoverCommand : ICliCommand
 {
@@ -13,6 +14,8 @@ internal sealed class DiscoverCommand : ICliCommand
     {
         var command = new Command("discover", "Find the modules on a bus and compare them with the robot file.");
         var busOptions = new BusOptions(command);
+        var clearFaults = new Option<bool>("--clear-faults") { Description = "With a robot file: say which modules have a latched error (e.g. a tripped bus watchdog), then clear it" };
+        command.Options.Add(clearFaults);
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
@@ -35,6 +38,11 @@ internal sealed class DiscoverCommand : ICliCommand
                 foreach (var line in report.Lines())
                 {
                     output.WriteLine(line);
+                }
+
+                if (parse.GetValue(clearFaults))
+                {
+                    _ = LatchedFaults.Clear(session.Robot, output);
                 }
 
                 var mismatches = session.Robot.CheckParameters();

@@ -33,6 +33,10 @@ internal sealed class RunCommand : ICliCommand
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (one load context each)" };
         var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
         var set = new Option<string[]>("--set") { Description = "Override a setting of a graph instance for this run, e.g. sim.endpoint=tcp://127.0.0.1:23456 (repeatable)", Arity = ArgumentArity.ZeroOrMore };
+        var transport = new Option<string?>("--transport") { Description = "Open this transport instead of the graph's, e.g. serial:/dev/pts/3?baud=1000000 (virtual[:...] is --virtual)" };
+        var rtPriority = CliOption.Number("--rt-priority", "Real time: run the bus and loop threads with SCHED_FIFO at this priority (1..99; 0: normal scheduling)", 0, 99, 0);
+        var cpu = CliOption.OptionalNumber<int>("--cpu", "Real time: pin the bus and loop threads to this CPU", 0, 1023);
+        var continueOnFault = new Option<bool>("--continue-on-fault") { Description = "Keep commanding when the robot faults (default: stop, motors off, exit 1)" };
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
         command.Arguments.Add(graph);
         command.Options.Add(isVirtual);
@@ -42,6 +46,10 @@ internal sealed class RunCommand : ICliCommand
         command.Options.Add(plugins);
         command.Options.Add(seed);
         command.Options.Add(set);
+        command.Options.Add(transport);
+        command.Options.Add(continueOnFault);
+        command.Options.Add(rtPriority);
+        command.Options.Add(cpu);
         command.SetAction(parse => Run(
             parse.GetValue(graph)!.FullName,
             parse.GetValue(isVirtual),
@@ -51,6 +59,7 @@ internal sealed class RunCommand : ICliCommand
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
             parse.GetValue(set) ?? [],
+            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -60,7 +69,7 @@ internal sealed class RunCommand : ICliCommand
     internal static PluginCatalog Catalog(string? pluginsFolder) => HostPlugins.Catalog(pluginsFolder);
 
     /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
-    internal static int Run(string graphPath, bool isVirtual, TimeSpan duration, string? reportPath, string? injectText, string? pluginsFolder, int seed, IReadOnlyList<string> settingOverrides, TextWriter output, TextWriter error)
+    internal static int Run(string graphPath, bool isVirtual, TimeSpan duration, string? reportPath, string? injectText, string? pluginsFolder, int seed, IReadOnlyList<string> settingOverrides, RunExtras extras, TextWriter output, TextWriter error)
     {
         var catalog = Catalog(pluginsFolder);
         foreach (var problem in catalog.Problems)
@@ -71,6 +80,7 @@ internal sealed class RunCommand : ICliCommand
         RunOptions options;
         try
         {
+            isVirtual = extras.ResolveVirtual(isVirtual);
             options = new RunOptions
             {
                 GraphPath = graphPath,
@@ -79,6 +89,9 @@ internal sealed class RunCommand : ICliCommand
                 Inject = FaultInjection.Parse(injectText),
                 Seed = seed,
                 SettingOverrides = [.. settingOverrides.Select(SettingOverride.Parse)],
+                Transport = isVirtual ? null : extras.Transport,
+                ContinueOnFault = extras.ContinueOnFault,
+                Threads = extras.Threads(),
             };
             RunPreflight.Check(options, catalog);
         }
@@ -91,6 +104,8 @@ internal sealed class RunCommand : ICliCommand
         var c = CultureInfo.InvariantCulture;
         output.WriteLine(string.Create(c, $"run {Path.GetFileName(graphPath)}: {(isVirtual ? "virtual robot (firmware in the loop), virtual clock" : "real time")}, {options.Duration.TotalSeconds:0.###} s, faults: {options.Inject}"));
         RunReport result;
+        using var signals = new StopSignals(error);
+        options = options with { Stop = signals.Token };
         try
         {
             var interactive = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected && AnsiConsole.Profile.Capabilities.Interactive;
@@ -114,13 +129,14 @@ internal sealed class RunCommand : ICliCommand
         }
 
         Summarise(result, output);
+        RunEnd.Tell(result, output, error);
         if (reportPath is not null)
         {
             AtomicFile.WriteAllText(reportPath, result.ToJson());
             output.WriteLine($"report: {reportPath}");
         }
 
-        return result.DeadlineMisses == 0 && result.Faults.Count == 0 && result.Safety is not { Trips.Count: > 0 } ? 0 : 1;
+        return RunEnd.ExitCode(result);
     }
 
     /// <summary>The first measure of <paramref name="r"/> that is not finite (a report holds numbers only), or null.</summary>
@@ -170,7 +186,7 @@ internal sealed class RunCommand : ICliCommand
         output.WriteLine(string.Create(c, $"summary: {r.Ticks} ticks in {r.DurationSeconds:F3} s of loop time, {r.DeadlineMisses} deadline misses"));
         output.WriteLine(string.Create(c, $"  tick time (us): median {r.TickMedianUs:F1}, p99 {r.TickP99Us:F1}, max {r.TickMaxUs:F1}"));
         output.WriteLine(string.Create(c, $"  tracking error (mm): rms {r.TrackingRmsMm:F3}, max {r.TrackingMaxMm:F3}"));
-        output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries"));
+        output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries, {r.Bus.LateReplies} late replies"));
         foreach (var line in r.Safety?.Lines() ?? [])
         {
             output.WriteLine(line);

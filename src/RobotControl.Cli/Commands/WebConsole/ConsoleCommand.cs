@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using RobotControl.Cli.Commands.Run;
+using RobotControl.Host.Session;
 using RobotControl.Runtime.Graph;
 using RobotControl.WebConsole.Adapter;
 using RobotControl.WebConsole.Server;
@@ -67,6 +68,11 @@ internal sealed class ConsoleCommand : ICliCommand
         HeadlessSession session;
         try
         {
+            if (transport is not null)
+            {
+                TransportOverride.Check(transport);
+            }
+
             session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed });
         }
         catch (GraphException ex)

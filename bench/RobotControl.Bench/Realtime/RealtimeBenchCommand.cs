@@ -1,0 +1,190 @@
+using System.Diagnostics;
+using System.Globalization;
+using System.Runtime;
+using System.Text.Json;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Plugins;
+using RobotControl.Host.Realtime;
+using RobotControl.Host.Safety;
+
+namespace RobotControl.Bench.Realtime;
+
+/// <summary>
+/// <c>realtime [--graph graphs/teleop-lb.json] [--robot hardware/robots/lb-1.0.json] [--seconds 600]
+/// [--scenarios idle,idle-sll,busy] [--rt-priority 0] [--sim-rt-priority 0] [--cpu N] [--out file.json]</c>: the shipped teleop graph on the
+/// wall clock, the 1 kHz loop and the bus on their own threads, the virtual robot (real firmware) in another process
+/// behind a pty (<c>robotctl bus-sim --pty</c>, a fresh one per scenario). Per scenario: deadline misses, tick start
+/// jitter p50/p99/p99.9/max, bus cycle period distribution, late replies, CRC errors, timeouts, retries, safety trips,
+/// tracking RMS/max next to the virtual-clock run of the same graph, and bytes allocated per tick. Scenarios:
+/// <c>idle</c> (default GC latency mode), <c>idle-sll</c> (<see cref="GCLatencyMode.SustainedLowLatency"/>),
+/// <c>busy</c> (SustainedLowLatency, one core kept busy by <c>stress-ng --cpu 1</c>).
+/// </summary>
+internal sealed class RealtimeBenchCommand : IBenchCommand
+{
+    private static readonly JsonSerializerOptions JsonOptions = new() { WriteIndented = true, PropertyNamingPolicy = JsonNamingPolicy.SnakeCaseLower, NumberHandling = System.Text.Json.Serialization.JsonNumberHandling.AllowNamedFloatingPointLiterals };
+
+    public string Name => "realtime";
+
+    public string Description => "Teleop graph on the wall clock against the virtual robot in another process behind a pty: misses, jitter, bus periods, late replies.";
+
+    public int Run(string[] args)
+    {
+        var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
+        var robot = Arg(args, "--robot") ?? "hardware/robots/lb-1.0.json";
+        var seconds = double.Parse(Arg(args, "--seconds") ?? "600", CultureInfo.InvariantCulture);
+        var scenarios = (Arg(args, "--scenarios") ?? "idle,idle-sll,busy").Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
+        var priority = int.Parse(Arg(args, "--rt-priority") ?? "0", CultureInfo.InvariantCulture);
+        var simPriority = int.Parse(Arg(args, "--sim-rt-priority") ?? "0", CultureInfo.InvariantCulture);
+        int? cpu = Arg(args, "--cpu") is { } c ? int.Parse(c, CultureInfo.InvariantCulture) : null;
+        var outFile = Arg(args, "--out");
+        if (!double.IsFinite(seconds) || seconds is < 1 or > 86_400 || scenarios.Any(s => s is not ("idle" or "idle-sll" or "busy")))
+        {
+            Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy");
+            return 2;
+        }
+
+        var duration = TimeSpan.FromSeconds(seconds);
+        var catalog = HostPlugins.Catalog();
+        Console.WriteLine($"virtual-clock reference: {graph}, {seconds} s");
+        var reference = HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration }, catalog);
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  tracking rms {reference.TrackingRmsMm:F3} mm, max {reference.TrackingMaxMm:F3} mm, {reference.DeadlineMisses} misses"));
+        var results = new List<ScenarioResult>();
+        var failures = new List<string>();
+        foreach (var name in scenarios)
+        {
+            Console.WriteLine($"scenario {name}: {seconds} s on the wall clock (load average {LoadAverage()})");
+            try
+            {
+                var result = RunScenario(name, graph, robot, duration, new RealtimeThreads(priority, cpu), simPriority, reference);
+                results.Add(result);
+                Console.WriteLine(result.Line());
+            }
+            catch (Exception ex) when (ex is IOException or InvalidOperationException)
+            {
+                Console.WriteLine($"  did not run: {ex.Message}");
+                failures.Add($"{name}: {ex.Message}");
+            }
+        }
+
+        if (outFile is not null)
+        {
+            File.WriteAllText(outFile, JsonSerializer.Serialize(new
+            {
+                graph,
+                robot,
+                seconds,
+                processors = Environment.ProcessorCount,
+                serverGc = GCSettings.IsServerGC,
+                @virtual = new { trackingRmsMm = reference.TrackingRmsMm, trackingMaxMm = reference.TrackingMaxMm, deadlineMisses = reference.DeadlineMisses },
+                scenarios = results,
+                failures,
+            }, JsonOptions));
+            Console.WriteLine($"wrote {outFile}");
+        }
+
+        return failures.Count == 0 ? 0 : 1;
+    }
+
+    private static ScenarioResult RunScenario(string name, string graph, string robot, TimeSpan duration, RealtimeThreads threads, int simPriority, RunReport reference)
+    {
+        var (sim, transport) = ChildProcess.StartBusSim(robot, simPriority);
+        using (sim)
+        {
+            string? loadProblem = null;
+            using var load = name == "busy" ? ChildProcess.StartCpuLoad(duration + TimeSpan.FromSeconds(10), out loadProblem) : null;
+            var before = GCSettings.LatencyMode;
+            GCSettings.LatencyMode = name == "idle" ? GCLatencyMode.Interactive : GCLatencyMode.SustainedLowLatency;
+            var loadStart = LoadAverage();
+            CycleTimesLink? cycles = null;
+            var gen0 = GC.CollectionCount(0);
+            var gen2 = GC.CollectionCount(2);
+            long allocStart = 0, allocStartAt = 0, allocEnd = 0, allocEndAt = 0;
+            double lagP50 = 0, lagP99 = 0, lagP999 = 0, lagMax = 0;
+            try
+            {
+                var report = HeadlessRun.RunRealTime(
+                    new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads },
+                    HostPlugins.Catalog(),
+                    new VirtualRunHooks
+                    {
+                        WrapLink = (link, _) => cycles = new CycleTimesLink(link, (int)(duration.TotalSeconds * 2_000) + 10_000, () => (allocStart, allocStartAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp())),
+                        AfterRun = session =>
+                        {
+                            (allocEnd, allocEndAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp());
+                            var s = session.Loop.Statistics;
+                            (lagP50, lagP99, lagP999, lagMax) = (s.StartLagPercentile(0.5), s.StartLagPercentile(0.99), s.StartLagPercentile(0.999), s.StartLagMaxUs);
+                        },
+                    });
+                var periods = Periods(cycles!.Starts);
+                var allocSeconds = (allocEndAt - allocStartAt) / (double)Stopwatch.Frequency;
+                var bytesPerSecond = allocStart > 0 && allocSeconds > 0 ? (allocEnd - allocStart) / allocSeconds : double.NaN;
+                var safety = report.Safety;
+                return new ScenarioResult(
+                    name,
+                    GCSettings.LatencyMode.ToString(),
+                    report.Scheduling ?? threads.Outcome,
+                    loadProblem,
+                    loadStart,
+                    LoadAverage(),
+                    report.Ticks,
+                    report.DeadlineMisses,
+                    report.Ticks == 0 ? 0 : report.DeadlineMisses / (double)report.Ticks,
+                    new Quantiles(lagP50, lagP99, lagP999, lagMax),
+                    new Quantiles(report.TickMedianUs, report.TickP99Us, report.TickP99Us, report.TickMaxUs),
+                    periods.Length == 0 ? new Quantiles(0, 0, 0, 0) : new Quantiles(Quantile(periods, 0.5), Quantile(periods, 0.99), Quantile(periods, 0.999), periods[^1]),
+                    periods.Length == 0 ? 0 : periods.Length / (periods.Sum() * 1e-6),
+                    report.Bus.LateReplies,
+                    report.Bus.CrcErrors,
+                    report.Bus.Timeouts,
+                    report.Bus.Retries,
+                    report.Faults.Count(f => f.Message.Contains("watchdog", StringComparison.OrdinalIgnoreCase)),
+                    safety is null ? [] : [.. safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds:F3} s".Replace("  ", " ", StringComparison.Ordinal))],
+                    report.TrackingRmsMm,
+                    report.TrackingMaxMm,
+                    reference.TrackingRmsMm == 0 ? double.NaN : report.TrackingRmsMm / reference.TrackingRmsMm,
+                    bytesPerSecond / 1000.0,
+                    bytesPerSecond / (periods.Length == 0 ? double.NaN : periods.Length / (periods.Sum() * 1e-6)),
+                    GC.CollectionCount(0) - gen0,
+                    GC.CollectionCount(2) - gen2,
+                    report.Stop?.TorqueOff ?? false);
+            }
+            finally
+            {
+                GCSettings.LatencyMode = before;
+            }
+        }
+    }
+
+    /// <summary>Sorted cycle periods in microseconds, from consecutive cycle starts.</summary>
+    private static double[] Periods(ReadOnlySpan<long> starts)
+    {
+        var periods = new double[Math.Max(0, starts.Length - 1)];
+        for (var i = 1; i < starts.Length; i++)
+        {
+            periods[i - 1] = (starts[i] - starts[i - 1]) * 1e6 / Stopwatch.Frequency;
+        }
+
+        Array.Sort(periods);
+        return periods;
+    }
+
+    private static double Quantile(double[] sorted, double q) => sorted[Math.Min(sorted.Length - 1, (int)Math.Ceiling(q * sorted.Length) - 1)];
+
+    private static string LoadAverage()
+    {
+        try
+        {
+            return string.Join(' ', File.ReadAllText("/proc/loadavg").Split(' ').Take(3));
+        }
+        catch (IOException)
+        {
+            return "?";
+        }
+    }
+
+    private static string? Arg(string[] args, string name)
+    {
+        var i = Array.IndexOf(args, name);
+        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
+    }
+}

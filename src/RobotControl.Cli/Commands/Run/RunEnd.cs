@@ -1,0 +1,56 @@
+using System.Globalization;
+using RobotControl.Host.Harness;
+
+namespace RobotControl.Cli.Commands.Run;
+
+/// <summary>How a run ended, said prominently, and its exit code.</summary>
+internal static class RunEnd
+{
+    /// <summary>Exit code of an interrupted run (128 + SIGINT, as shells report it).</summary>
+    public const int Interrupted = 130;
+
+    /// <summary>0: clean; 130: interrupted; 1: a robot fault stopped it, faults, safety trips, deadline misses, or torque not confirmed off.</summary>
+    public static int ExitCode(RunReport result)
+    {
+        ArgumentNullException.ThrowIfNull(result);
+        if (result.Interrupted)
+        {
+            return Interrupted;
+        }
+
+        var clean = result.StoppedOnFault is null && result.DeadlineMisses == 0 && result.Faults.Count == 0 && result.Safety is not { Trips.Count: > 0 } && result.Stop?.TorqueOff != false;
+        return clean ? 0 : 1;
+    }
+
+    /// <summary>Prints the fault that stopped the run and the stop's read-back (errors to <paramref name="error"/>).</summary>
+    public static void Tell(RunReport result, TextWriter output, TextWriter error)
+    {
+        ArgumentNullException.ThrowIfNull(result);
+        if (result.StoppedOnFault is { } fault)
+        {
+            error.WriteLine($"ROBOT FAULT: {fault}. The run stopped commanding and switched the motors off (--continue-on-fault to keep going).");
+        }
+
+        if (result.Interrupted)
+        {
+            error.WriteLine(string.Create(CultureInfo.InvariantCulture, $"interrupted after {result.DurationSeconds:F3} s"));
+        }
+
+        if (result.Scheduling is { } scheduling)
+        {
+            output.WriteLine($"  threads: {scheduling}");
+        }
+
+        if (result.Stop is { } stop)
+        {
+            var line = stop.TorqueOff
+                ? $"  stop: torque off on all {stop.Modules} modules (read back)"
+                : $"  stop: torque NOT confirmed off: on at [{string.Join(", ", stop.TorqueOn)}], no answer from [{string.Join(", ", stop.Unreachable)}]";
+            (stop.TorqueOff ? output : error).WriteLine(line);
+            foreach (var latched in stop.LatchedErrors)
+            {
+                error.WriteLine($"  latched in module {latched}");
+            }
+        }
+    }
+}

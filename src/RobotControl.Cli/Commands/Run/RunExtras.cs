@@ -1,0 +1,55 @@
+using RobotControl.Bus.Transports;
+using RobotControl.Host.Realtime;
+using RobotControl.Host.Session;
+
+namespace RobotControl.Cli.Commands.Run;
+
+/// <summary><c>run</c>'s transport override and fault policy, checked before anything is loaded or opened.</summary>
+/// <param name="Transport">The <c>--transport</c> value (null: the graph's).</param>
+/// <param name="ContinueOnFault">The <c>--continue-on-fault</c> flag.</param>
+/// <param name="RtPriority">The <c>--rt-priority</c> value (SCHED_FIFO 1..99; 0: normal scheduling).</param>
+/// <param name="Cpu">The <c>--cpu</c> value (null: any CPU).</param>
+internal sealed record RunExtras(string? Transport, bool ContinueOnFault, int RtPriority = 0, int? Cpu = null)
+{
+    /// <summary>The real-time threads' scheduling.</summary>
+    /// <exception cref="FormatException">One line naming the option out of range.</exception>
+    public RealtimeThreads Threads()
+    {
+        if (RtPriority is < 0 or > 99)
+        {
+            throw new FormatException($"--rt-priority {RtPriority}: give 1..99 (SCHED_FIFO), or 0 for normal scheduling");
+        }
+
+        if (Cpu is { } cpu && (cpu < 0 || cpu >= Environment.ProcessorCount))
+        {
+            throw new FormatException($"--cpu {cpu}: this machine has CPUs 0..{Environment.ProcessorCount - 1}");
+        }
+
+        return new RealtimeThreads(RtPriority, Cpu);
+    }
+
+    /// <summary>Checks the override; returns whether the run is virtual (<c>--virtual</c>, or a <c>virtual</c> transport).</summary>
+    /// <exception cref="FormatException">One line: the transport is malformed, names a missing device, or contradicts <c>--virtual</c>.</exception>
+    public bool ResolveVirtual(bool isVirtual)
+    {
+        if (Transport is null)
+        {
+            return isVirtual;
+        }
+
+        if (Transport.Equals("virtual", StringComparison.OrdinalIgnoreCase))
+        {
+            return true;
+        }
+
+        var uri = TransportOverride.Check(Transport);
+        if (uri.Kind == LinkKind.Virtual)
+        {
+            return true;
+        }
+
+        return isVirtual
+            ? throw new FormatException($"--transport {Transport} and --virtual contradict each other: give one")
+            : false;
+    }
+}

@@ -1,0 +1,75 @@
+using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
+using RobotControl.Modules;
+using RobotControl.Robot.Bus;
+
+namespace RobotControl.Host.Session;
+
+/// <summary>
+/// What the modules said after a session switched their motors off: every configured module is read back (torque of
+/// every channel, latched hardware errors), so that a stop is known to have left the robot safe, not assumed to.
+/// </summary>
+/// <param name="Modules">Modules read back.</param>
+/// <param name="TorqueOn">Modules that still report torque on (each as <c>id "name"</c>).</param>
+/// <param name="LatchedErrors">Modules with a latched hardware error, and which (e.g. a tripped bus watchdog).</param>
+/// <param name="Unreachable">Modules that did not answer the read-back.</param>
+public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IReadOnlyList<string> LatchedErrors, IReadOnlyList<string> Unreachable)
+{
+    /// <summary>True when every module answered and reports torque off on every channel.</summary>
+    public bool TorqueOff => TorqueOn.Count == 0 && Unreachable.Count == 0;
+
+    /// <summary>
+    /// Switches the motors off (through the robot's state machine; if a module refuses, by writing torque and watchdog
+    /// off to every configured module directly) and reads every module back.
+    /// </summary>
+    public static StopCheck TorqueOffAndVerify(BusRobot robot)
+    {
+        ArgumentNullException.ThrowIfNull(robot);
+        var table = ControlTable.Firmware;
+        var torque = table["torque_enable"];
+        var watchdog = table["bus_watchdog"];
+        var status = table["hardware_error_status"];
+        try
+        {
+            robot.EnableTorque(false);
+        }
+        catch (Exception ex) when (ex is IOException or InvalidOperationException)
+        {
+            var zeros = new byte[Span(torque)];
+            foreach (var c in robot.Controllers)
+            {
+                _ = robot.Client.Write(c.Id, torque.At(0), zeros);
+                _ = robot.Client.Write(c.Id, watchdog.At(0), zeros.AsSpan(0, watchdog.Size));
+            }
+        }
+
+        var on = new List<string>();
+        var latched = new List<string>();
+        var unreachable = new List<string>();
+        var channels = new byte[Span(torque)];
+        var error = new byte[1];
+        foreach (var c in robot.Controllers)
+        {
+            var who = $"{c.Id} \"{c.Name}\"";
+            if (!robot.Client.Read(c.Id, torque.At(0), channels).Succeeded || robot.Client.Read(c.Id, status.At(0), error).Outcome != ReplyOutcome.Ok)
+            {
+                unreachable.Add(who);
+                continue;
+            }
+
+            if (channels.Any(b => b != 0))
+            {
+                on.Add(who);
+            }
+
+            if (error[0] != 0)
+            {
+                latched.Add($"{who}: {new HardwareErrors(error[0])}");
+            }
+        }
+
+        return new StopCheck(robot.Controllers.Count, on, latched, unreachable);
+    }
+
+    private static int Span(ControlTableField field) => ((field.Count - 1) * field.Stride) + field.Size;
+}

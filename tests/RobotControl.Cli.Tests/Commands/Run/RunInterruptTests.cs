@@ -1,0 +1,113 @@
+using System.Text.Json;
+using System.Text.RegularExpressions;
+using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
+using RobotControl.Bus.Transports;
+using RobotControl.Hardware.Loading;
+
+namespace RobotControl.Cli.Tests.Commands.Run;
+
+/// <summary>
+/// Ctrl+C during <c>robotctl run</c> (a child process, as a user runs it): the loop stops, torque goes off on every
+/// module, the report is written and marked interrupted, the exit code is non-zero, and the next run starts.
+/// </summary>
+[Collection(RunProcess.Collection)]
+public sealed partial class RunInterruptTests
+{
+    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(90);
+
+    [Fact]
+    public void Ctrl_C_on_the_virtual_robot_stops_switches_torque_off_and_writes_an_interrupted_report()
+    {
+        var report = Path.Combine(Directory.CreateTempSubdirectory("rcrun").FullName, "report.json");
+        using (var run = new RunProcess("run", RunProcess.Graph, "--virtual", "--duration", "10m", "--report", report))
+        {
+            run.WaitFor("t=", Patience);
+            run.Signal("INT");
+            Assert.Equal(130, run.WaitForExit(Patience));
+            Assert.Contains("SIGINT: stopping", run.Output, StringComparison.Ordinal);
+        }
+
+        AssertInterruptedAndSafe(report);
+    }
+
+    [Fact]
+    public void Ctrl_C_on_a_pty_bus_leaves_every_module_torque_off_without_a_latched_watchdog_and_the_next_run_starts()
+    {
+        using var sim = new RunProcess("bus-sim", RunProcess.RepoFile("hardware", "robots", "lb-1.0.json"), "--pty");
+        var transport = TransportOf().Match(sim.WaitFor("serving", Patience)).Value;
+        var dir = Directory.CreateTempSubdirectory("rcrun").FullName;
+        var report = Path.Combine(dir, "report.json");
+        // --continue-on-fault: on this shared machine the simulator process can fall behind and lose replies; the
+        // stop is what is tested here, so the run must still be running when the signal comes.
+        using (var run = new RunProcess("run", RunProcess.Graph, "--transport", transport, "--duration", "10m", "--continue-on-fault", "--report", report))
+        {
+            run.WaitFor("t=", Patience);
+            Thread.Sleep(1000); // let the wall-clock loop run a while
+            run.Signal("INT");
+            Assert.Equal(130, run.WaitForExit(Patience));
+        }
+
+        using (var stopped = JsonDocument.Parse(File.ReadAllText(report)))
+        {
+            Assert.True(stopped.RootElement.GetProperty("interrupted").GetBoolean());
+            Assert.Equal(6, stopped.RootElement.GetProperty("stop").GetProperty("modules").GetInt32());
+            var tripped = stopped.RootElement.GetProperty("faults").EnumerateArray().Any(f => f.GetProperty("message").GetString()!.Contains("watchdog", StringComparison.Ordinal));
+            if (tripped)
+            {
+                // The machine stalled the run (or the simulator) past the watchdog before the signal: that latch is
+                // the modules doing their job mid-run, not the stop's. Clear it deliberately, as a user would.
+                using var clear = new RunProcess("discover", transport, "--robot", RunProcess.RepoFile("hardware", "robots", "lb-1.0.json"), "--clear-faults");
+                clear.WaitForExit(Patience);
+                Assert.Contains("cleared the latched errors", clear.Output, StringComparison.Ordinal);
+            }
+        }
+
+        AssertModulesSafe(transport); // read back independently: torque off everywhere, nothing latched
+        var next = Path.Combine(dir, "next.json");
+        using (var run = new RunProcess("run", RunProcess.Graph, "--transport", transport, "--duration", "1s", "--report", next))
+        {
+            var code = run.WaitForExit(Patience);
+            Assert.True(code is 0 or 1, run.Output); // 1: deadline misses on a loaded machine; 2 would be a refusal to start
+        }
+
+        using var doc = JsonDocument.Parse(File.ReadAllText(next));
+        Assert.True(doc.RootElement.GetProperty("ticks").GetInt64() > 0, File.ReadAllText(next)); // it started: modules armed, loop ticking (a loaded machine may stop it on a fault early)
+        Assert.False(doc.RootElement.GetProperty("interrupted").GetBoolean());
+        Assert.Equal(0, doc.RootElement.GetProperty("stop").GetProperty("torque_on").GetArrayLength()); // no module answered "torque on" after its stop
+    }
+
+    private static void AssertInterruptedAndSafe(string report)
+    {
+        using var doc = JsonDocument.Parse(File.ReadAllText(report));
+        var root = doc.RootElement;
+        Assert.True(root.GetProperty("interrupted").GetBoolean());
+        Assert.True(root.GetProperty("ticks").GetInt64() > 0);
+        var stop = root.GetProperty("stop");
+        Assert.Equal(6, stop.GetProperty("modules").GetInt32());
+        Assert.True(stop.GetProperty("torque_off").GetBoolean(), stop.ToString());
+        Assert.Equal(0, stop.GetProperty("latched_errors").GetArrayLength());
+    }
+
+    /// <summary>Reads every module back over the pty, independently of robotctl: torque off, no error latched.</summary>
+    private static void AssertModulesSafe(string transport)
+    {
+        var robot = RobotLoader.Load(RunProcess.RepoFile("hardware", "robots", "lb-1.0.json"));
+        var table = ControlTable.Firmware;
+        var torque = table["torque_enable"];
+        var status = table["hardware_error_status"];
+        using var client = new BusClient(LinkFactory.Open(transport), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(50) });
+        var channels = new byte[((torque.Count - 1) * torque.Stride) + torque.Size];
+        var error = new byte[1];
+        foreach (var m in robot.Modules.Modules)
+        {
+            Assert.True(client.Read(m.Id, torque.At(0), channels).Succeeded, $"module {m.Id} did not answer");
+            Assert.All(channels, b => Assert.Equal(0, b));
+            Assert.True(client.Read(m.Id, status.At(0), error).Outcome == ReplyOutcome.Ok);
+            Assert.Equal(0, error[0]);
+        }
+    }
+
+    [GeneratedRegex(@"serial:\S+")]
+    private static partial Regex TransportOf();
+}

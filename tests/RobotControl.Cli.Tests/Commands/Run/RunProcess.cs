@@ -1,0 +1,113 @@
+using System.Diagnostics;
+using System.Text;
+
+namespace RobotControl.Cli.Tests.Commands.Run;
+
+/// <summary>Runs <c>robotctl</c> as a child process (as a user would), with its output collected line by line.</summary>
+internal sealed class RunProcess : IDisposable
+{
+    /// <summary>The test collection of every test that runs a robot in real time: one at a time, on a shared machine.</summary>
+    public const string Collection = "real-time runs";
+
+    private readonly Process _process;
+    private readonly StringBuilder _output = new();
+
+    public RunProcess(params string[] args)
+    {
+        var start = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "robotctl.dll"));
+        foreach (var a in args)
+        {
+            start.ArgumentList.Add(a);
+        }
+
+        _process = new Process { StartInfo = start };
+        _process.OutputDataReceived += (_, e) => Append(e.Data);
+        _process.ErrorDataReceived += (_, e) => Append(e.Data);
+        _process.Start();
+        _process.BeginOutputReadLine();
+        _process.BeginErrorReadLine();
+    }
+
+    /// <summary>The shipped teleoperation graph.</summary>
+    public static string Graph => RepoFile("graphs", "teleop-lb.json");
+
+    /// <summary>Everything printed so far (stdout and stderr).</summary>
+    public string Output
+    {
+        get
+        {
+            lock (_output)
+            {
+                return _output.ToString();
+            }
+        }
+    }
+
+    public static string RepoFile(params string[] parts)
+    {
+        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
+        {
+            var path = Path.Combine([dir.FullName, .. parts]);
+            if (File.Exists(path))
+            {
+                return path;
+            }
+        }
+
+        throw new FileNotFoundException($"{Path.Combine(parts)} not found above {AppContext.BaseDirectory}");
+    }
+
+    /// <summary>Waits until the output contains <paramref name="text"/>; returns the output.</summary>
+    public string WaitFor(string text, TimeSpan timeout)
+    {
+        var waited = Stopwatch.StartNew();
+        while (!Output.Contains(text, StringComparison.Ordinal))
+        {
+            Assert.True(waited.Elapsed < timeout && !_process.HasExited, $"no '{text}' after {waited.Elapsed.TotalSeconds:F0} s; output:\n{Output}");
+            Thread.Sleep(50);
+        }
+
+        return Output;
+    }
+
+    /// <summary>Sends a signal (e.g. INT, TERM) to the process.</summary>
+    public void Signal(string name)
+    {
+        using var kill = Process.Start("kill", ["-" + name, _process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)])!;
+        kill.WaitForExit();
+        Assert.True(kill.ExitCode == 0, $"kill -{name} failed (exited already?); output:\n{Output}");
+    }
+
+    /// <summary>Waits for the exit; returns the exit code.</summary>
+    public int WaitForExit(TimeSpan timeout)
+    {
+        Assert.True(_process.WaitForExit(timeout), $"still running after {timeout.TotalSeconds:F0} s; output:\n{Output}");
+        _process.WaitForExit(); // flush the output events
+        return _process.ExitCode;
+    }
+
+    public void Dispose()
+    {
+        if (!_process.HasExited)
+        {
+            _process.Kill();
+            _process.WaitForExit();
+        }
+
+        _process.Dispose();
+    }
+
+    private void Append(string? line)
+    {
+        if (line is null)
+        {
+            return;
+        }
+
+        lock (_output)
+        {
+            _output.AppendLine(line);
+        }
+    }
+}

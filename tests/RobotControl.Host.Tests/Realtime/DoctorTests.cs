@@ -1,0 +1,69 @@
+using RobotControl.Bus.Transports.Serial;
+using RobotControl.Host.Realtime;
+
+namespace RobotControl.Host.Tests.Realtime;
+
+/// <summary><c>doctor</c> on a made-up sysfs: an FTDI adapter at the default 16 ms latency timer, a powersave governor.</summary>
+public sealed class DoctorTests : IDisposable
+{
+    private readonly DirectoryInfo _root = Directory.CreateTempSubdirectory("rcdoctor");
+
+    public DoctorTests()
+    {
+        var sys = Path.Combine(_root.FullName, "sys");
+        var device = Directory.CreateDirectory(Path.Combine(sys, "class", "tty", "ttyUSB9", "device")).FullName;
+        File.WriteAllText(Path.Combine(device, "latency_timer"), "16\n");
+        var driver = Directory.CreateDirectory(Path.Combine(sys, "bus", "usb-serial", "drivers", "ftdi_sio")).FullName;
+        Directory.CreateSymbolicLink(Path.Combine(device, "driver"), driver);
+        var cpufreq = Directory.CreateDirectory(Path.Combine(sys, "devices", "system", "cpu", "cpu0", "cpufreq")).FullName;
+        File.WriteAllText(Path.Combine(cpufreq, "scaling_governor"), "powersave\n");
+        File.WriteAllText(Tty, string.Empty); // the "device" node
+    }
+
+    private string Sys => Path.Combine(_root.FullName, "sys");
+
+    private string Tty => Path.Combine(_root.FullName, "ttyUSB9");
+
+    public void Dispose() => _root.Delete(recursive: true);
+
+    [Fact]
+    public void Reports_the_latency_timer_the_baud_error_and_the_governor_with_what_to_change()
+    {
+        var findings = Doctor.Examine($"serial:{Tty}?baud=1000000", Sys).ToDictionary(f => f.Check);
+        Assert.Contains("16 ms", findings["latency_timer"].Found, StringComparison.Ordinal);
+        Assert.Contains("echo 1 >", findings["latency_timer"].Advice, StringComparison.Ordinal);
+        Assert.Contains("runs at 1000000 (0 %)", findings["baud error"].Found, StringComparison.Ordinal);
+        Assert.Null(findings["baud error"].Advice);
+        Assert.Contains("powersave", findings["cpu frequency"].Found, StringComparison.Ordinal);
+        Assert.Equal("cpupower frequency-set -g performance", findings["cpu frequency"].Advice);
+        Assert.Contains("no serial_struct", findings["low_latency"].Found, StringComparison.Ordinal);
+        Assert.True(findings.ContainsKey("real-time priority"));
+    }
+
+    [Fact]
+    public void Opening_a_usb_serial_adapter_sets_its_latency_timer_to_1_ms()
+    {
+        Assert.Equal(16, LatencyTimer.Read(Tty, Sys));
+        Assert.Equal(1, LatencyTimer.TrySetOneMs(Tty, Sys));
+        Assert.Null(Doctor.Examine($"serial:{Tty}", Sys).Single(f => f.Check == "latency_timer").Advice);
+        Assert.Null(LatencyTimer.TrySetOneMs("/dev/null", Sys)); // no latency timer: nothing to set
+    }
+
+    [Theory]
+    [InlineData(1_000_000, 1_000_000, 0.0)]
+    [InlineData(115_200, 115_384.6, 0.16)]
+    [InlineData(921_600, 923_076.9, 0.16)]
+    public void The_FTDI_baud_error_is_that_of_a_3_MHz_clock_divided_in_eighths(int baud, double actual, double errorPercent)
+    {
+        var (a, e) = Doctor.FtdiBaud(baud);
+        Assert.Equal(actual, a, 0.1);
+        Assert.Equal(errorPercent, e, 0.01);
+    }
+
+    [Fact]
+    public void A_missing_device_is_one_clear_error()
+    {
+        var ex = Assert.Throws<FormatException>(() => Doctor.Examine("serial:/dev/robotcontrol-none", Sys));
+        Assert.Equal("--transport serial:/dev/robotcontrol-none: no device /dev/robotcontrol-none", ex.Message);
+    }
+}
