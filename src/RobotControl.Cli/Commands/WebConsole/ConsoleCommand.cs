@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using RobotControl.Cli.Commands.Run;
+using RobotControl.Cli.Options;
 using RobotControl.Host.Session;
 using RobotControl.Runtime.Graph;
 using RobotControl.WebConsole.Adapter;
@@ -24,7 +25,7 @@ internal sealed class ConsoleCommand : ICliCommand
         var token = new Option<string?>("--token") { Description = "Access token (generated and printed when a non-loopback bind has none)" };
         var open = new Option<bool>("--open") { Description = "Open the console in a browser window (Chromium's --app mode) when one is installed" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder" };
-        var seed = new Option<int>("--seed") { Description = "Seed of the virtual robot's noise", DefaultValueFactory = _ => 1 };
+        var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
         var command = new Command("console", "Web console: bus and controllers, plots, 3D view and run status of a running session.");
         command.Arguments.Add(graph);
         foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed })
