@@ -327,6 +327,21 @@ static void watchdog_stops_and_latches(void)
     rcfw_bus_destroy(bus);
 }
 
+/* pot_raw is the pot's latest reading within 1 ms while running, not only the one taken at reset or homing */
+static void pot_raw_follows_the_pot_while_running(void)
+{
+    rcfw_bus *bus = make(1);
+    rcfw_set_pot_raw(bus, 0, 0, 1234);
+    rcfw_set_pot_raw(bus, 0, 1, 2345);
+    rcfw_advance_us(bus, 1100);
+    CHECK_EQ(peek16(bus, 0, RCFW_CT_POT_RAW), 1234);
+    CHECK_EQ(peek16(bus, 0, RCFW_CT_POT_RAW + 2), 2345);
+    rcfw_set_pot_raw(bus, 0, 0, 0); /* an open wiper */
+    rcfw_advance_us(bus, 1100);
+    CHECK_EQ(peek16(bus, 0, RCFW_CT_POT_RAW), 0);
+    rcfw_bus_destroy(bus);
+}
+
 static void homing_and_resume(void)
 {
     rcfw_bus *bus = make(1);
@@ -617,6 +632,7 @@ int main(void)
     TF_RUN(malformed_frames_have_no_effect);
     TF_RUN(watchdog_stops_and_latches);
     TF_RUN(homing_and_resume);
+    TF_RUN(pot_raw_follows_the_pot_while_running);
     TF_RUN(home_request_homes_only_the_chosen_motors);
     TF_RUN(home_request_clears_mismatch_and_position_lost_per_motor);
     TF_RUN(home_request_refused_changes_nothing);

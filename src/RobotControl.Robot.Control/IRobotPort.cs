@@ -36,6 +36,13 @@ public interface IRobotPort
 
     /// <summary>Commands every motor to hold where it is (used when a plug-in faults or a value is invalid).</summary>
     void HoldPosition();
+
+    /// <summary>
+    /// True while teleoperation may drive the arms (a safety supervisor's run level, e.g. pedal down); false while the
+    /// robot holds (a trip, pedal up, homing): the graph then zeroes the haptic handles' forces. A port without a
+    /// supervisor always allows it.
+    /// </summary>
+    bool TeleopAllowed => true;
 }
 
 /// <summary>Robot-level fault flags, surfaced in the graph as an output.</summary>

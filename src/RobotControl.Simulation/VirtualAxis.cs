@@ -45,6 +45,12 @@ public sealed class VirtualAxis
     /// </summary>
     public double CurrentSenseOffsetA { get; set; }
 
+    /// <summary>
+    /// A failed joint pot: its ADC reads this raw value whatever the joint does (0: an open wiper pulled to ground).
+    /// Null: the pot follows the joint (with its non-linearity and noise).
+    /// </summary>
+    public int? PotFailedRaw { get; set; }
+
     internal int ModuleIndex { get; }
 
     internal DrivetrainModel Model { get; }

@@ -28,6 +28,11 @@ public sealed unsafe partial class VirtualRobot
             var n = port.Read(buffer, TimeSpan.FromMicroseconds(200));
             if (n > 0)
             {
+                if (pty is not null)
+                {
+                    FollowLineBaud(pty.ClientBaud); // a client sets its baud before it writes: these bytes run at it
+                }
+
                 HostWrite(buffer.AsSpan(0, n));
             }
 

@@ -343,7 +343,8 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         {
             var current = (Math.Abs(axis.Model.Current) + axis.CurrentSenseOffsetA) * axis.Config.RawPerAmp + _sensorNoise.Gaussian(_options.CurrentNoiseCounts);
             _ = FirmwareHost.SetCurrentRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(current), 0, 4095));
-            var pot = axis.Config.Motor.Pot.Reading(axis.Model.OutputAngle) + _sensorNoise.Gaussian(_options.PotNoiseCounts);
+            var noise = _sensorNoise.Gaussian(_options.PotNoiseCounts);
+            var pot = axis.PotFailedRaw ?? (axis.Config.Motor.Pot.Reading(axis.Model.OutputAngle) + noise);
             _ = FirmwareHost.SetPotRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(pot), 0, 4095));
         }
     }

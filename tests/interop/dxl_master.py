@@ -15,8 +15,8 @@ import time
 
 # Control-table addresses (docs/protocol.md): the Dynamixel-standard ones and the module's feedback block.
 MODEL, FW, ID, RDELAY = 0, 6, 7, 9
-KP, POS_MAX = 20, 32
-TORQUE, GOAL, PRESENT = 224, 232, 248
+MOTOR_COUNT, KP, POS_MAX, POT_POS0 = 2, 20, 32, 36
+TORQUE, HW_ERROR, RESET_CAUSE, WATCHDOG, GOAL, PRESENT, HOME = 224, 228, 229, 230, 232, 248, 324
 CLEAR_KEY = bytes([0x44, 0x58, 0x4C, 0x22])
 
 
@@ -39,6 +39,7 @@ def stuff(body):
 
 
 def packet(ident, inst, params=b""):
+    """An instruction packet (or, with inst 0x55 and the error byte first in params, a status packet)."""
     body = stuff(bytes([inst]) + params)
     head = bytes([0xFF, 0xFF, 0xFD, 0x00, ident]) + struct.pack("<H", len(body) + 2) + body
     return head + struct.pack("<H", crc16(head))
@@ -176,6 +177,62 @@ def main():
     expect("clear multi-turn does not apply: result fail", a, 0x10, b"\x01" + CLEAR_KEY, 0x01)
     expect("clear with a wrong key: data range", a, 0x10, b"\x02\x00\x00\x00\x00", 0x04)
 
+    # More error cases: each gets its own code.
+    expect("0x07 write to an unmapped byte", a, 0x03, wr(3, b"\x00"), 0x07)
+    expect("0x07 write past the table", a, 0x03, wr(0xFFF0, b"\x00"), 0x07)
+    expect("0x05 reg write without data", a, 0x04, struct.pack("<H", GOAL), 0x05)
+    expect("0x05 action with parameters", a, 0x05, b"\x00", 0x05)
+    expect("0x05 clear without its key", a, 0x10, b"\x02", 0x05)
+    expect("0x05 factory reset without a mode", a, 0x06, b"", 0x05)
+    expect("0x04 factory reset mode not defined", a, 0x06, b"\x03", 0x04)
+    expect("0x04 home_request above its range", a, 0x03, wr(HOME, b"\x10"), 0x04)
+    expect("torque on (motor 0)", a, 0x03, wr(TORQUE, b"\x01"), 0)
+    expect("0x01 homing a driven motor is refused", a, 0x03, wr(HOME, b"\x01"), 0x01)
+    expect("torque off (motor 0)", a, 0x03, wr(TORQUE, b"\x00"), 0)
+
+    # Byte stuffing both ways: a request whose parameters hold FF FF FD (a READ of address FFFF, length 00FD: past the
+    # table, so 0x07; read unstuffed it would have 5 parameters, 0x05), and a reply whose data holds it.
+    expect("stuffed request is unstuffed (0x07, not 0x05)", a, 0x02, rd(0xFFFF, 0x00FD), 0x07)
+    pos0 = expect("read pot_cal_pos0", a, 0x02, rd(POT_POS0, 4), 0)[2]
+    expect("write FF FF FD FF (stuffed request)", a, 0x03, wr(POT_POS0, b"\xFF\xFF\xFD\xFF"), 0)
+    bus.send(a, 0x02, rd(POT_POS0, 4))
+    want = packet(a, 0x55, b"\x00\xFF\xFF\xFD\xFF")
+    got = bus.raw(len(want))
+    c.check("reply data FF FF FD FF comes stuffed (FF FF FD FD FF)", got == want, got.hex(" "))
+    expect("restore pot_cal_pos0", a, 0x03, wr(POT_POS0, pos0), 0)
+
+    # Alerts: a latched error (bus watchdog expired) sets bit 7 of every status error byte until it is cleared.
+    expect("bus watchdog 20 ms", a, 0x03, wr(WATCHDOG, struct.pack("<H", 20)), 0)
+    time.sleep(0.3)
+    st = ask(a, 0x01)
+    c.check("alert bit set once the watchdog expired", st is not None and st[1] == 0x80, repr(st))
+    expect("0x01 torque on while the watchdog error is latched", a, 0x03, wr(TORQUE, b"\x01"), 0x01)
+    expect("bus watchdog off", a, 0x03, wr(WATCHDOG, b"\x00\x00"), 0)
+    expect("clear errors", a, 0x10, b"\x02" + CLEAR_KEY, 0)
+    st = ask(a, 0x01)
+    c.check("alert bit gone after clear", st is not None and st[1] == 0x00, repr(st))
+
+    # REG WRITE in two modules, one broadcast ACTION: no reply, both applied.
+    goal_a = expect("read goal", a, 0x02, rd(GOAL, 4), 0)[2]
+    goal_b = expect("read goal (second module)", b, 0x02, rd(GOAL, 4), 0)[2]
+    ra = struct.pack("<i", struct.unpack("<i", goal_a)[0] + 2)
+    rb = struct.pack("<i", struct.unpack("<i", goal_b)[0] + 2)
+    expect("reg write (first module)", a, 0x04, wr(GOAL, ra), 0)
+    expect("reg write (second module)", b, 0x04, wr(GOAL, rb), 0)
+    bus.send(0xFE, 0x05)
+    c.check("broadcast action: no reply", bus.status(0.1) is None)
+    expect("broadcast action applied (first module)", a, 0x02, rd(GOAL, 4), 0, ra)
+    expect("broadcast action applied (second module)", b, 0x02, rd(GOAL, 4), 0, rb)
+
+    # SYNC WRITE is applied in every listed module, with no reply.
+    sa = struct.pack("<i", struct.unpack("<i", ra)[0] - 1)
+    sb = struct.pack("<i", struct.unpack("<i", rb)[0] - 1)
+    bus.send(0xFE, 0x83, rd(GOAL, 4) + bytes([a]) + sa + bytes([b]) + sb)
+    c.check("sync write: no reply", bus.status(0.1) is None)
+    expect("sync write applied (first module)", a, 0x02, rd(GOAL, 4), 0, sa)
+    expect("sync write applied (second module)", b, 0x02, rd(GOAL, 4), 0, sb)
+    new_goal = sa
+
     # BULK WRITE is applied (never silently dropped), BULK READ answers in list order.
     goal_b = expect("read goal (second module)", b, 0x02, rd(GOAL, 4), 0)[2]
     ga = struct.pack("<i", struct.unpack("<i", new_goal)[0] - 1)
@@ -208,6 +265,15 @@ def main():
             at += 4 + n
         c.check(name + ": one packet, each part with its CRC", ok, pk.hex(" "))
         c.check(name + ": data", ok and pk[10:14] == ga, pk.hex(" "))
+
+    # REBOOT and FACTORY RESET answer before they act; the module is back afterwards.
+    expect("reboot", b, 0x08, b"", 0)
+    time.sleep(0.2)
+    expect("after the reboot: reset cause 4 (software)", b, 0x02, rd(RESET_CAUSE, 1), 0, b"\x04")
+    expect("kp set away from its default", b, 0x03, wr(KP, struct.pack("<H", 300)), 0)
+    expect("factory reset (all but ID and baud)", b, 0x06, b"\x02", 0)
+    time.sleep(0.2)
+    expect("after the factory reset: kp back at its default 256, same ID and baud", b, 0x02, rd(KP, 2), 0, struct.pack("<H", 256))
 
     print("%d failed" % c.failed)
     return 1 if c.failed else 0

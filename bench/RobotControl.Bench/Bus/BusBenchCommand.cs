@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using System.Globalization;
 using System.Text.Json;
+using RobotControl.Bench.Ik;
 using RobotControl.Bus.Client;
 using RobotControl.Hardware.Loading;
 using RobotControl.Robot.Bus;
@@ -13,7 +14,9 @@ namespace RobotControl.Bench.Bus;
 /// <c>bus [--robot file] [--seconds s] [--repeats n] [--out file.json]</c>: full-state bus cycles (sync write of every
 /// goal, sync read of every position/current) of a robot on the virtual bus at 1 and 3 Mbaud: cycles per simulated
 /// second against the wire-time bound of the bytes each cycle puts on the wire, and host CPU per cycle (wall time
-/// outside the simulated link; the firmware simulation's share is reported apart).
+/// outside the simulated link; the firmware simulation's share is reported apart). On a shared machine wall time counts
+/// the time the thread sat descheduled, so the thread's own CPU time per cycle (host and simulation, which run on the
+/// one thread) is reported too, and the host's share of it estimated from the wall-time split.
 /// </summary>
 internal sealed class BusBenchCommand : IBenchCommand
 {
@@ -32,7 +35,7 @@ internal sealed class BusBenchCommand : IBenchCommand
         var robot = RobotLoader.Load(robotPath);
         var results = new List<object>();
         Console.WriteLine($"{robot.Name}: {robot.Modules.Modules.Count} modules, {robot.Modules.Modules.Sum(m => m.Motors.Count)} motors; {seconds} s simulated per run, {repeats} runs, medians");
-        Console.WriteLine("baud       cycles/s  bound/s  of bound  bytes/cycle  host us/cycle  sim us/cycle  alloc B/cycle");
+        Console.WriteLine("baud       cycles/s  bound/s  of bound  bytes/cycle  host us/cycle  sim us/cycle  alloc B/cycle  thread CPU us/cycle  host CPU us/cycle (est.)");
         foreach (var baud in new[] { 1_000_000, 3_000_000 })
         {
             var runs = Enumerable.Range(0, repeats).Select(_ => Measure(robot, baud, seconds)).ToList();
@@ -45,11 +48,13 @@ internal sealed class BusBenchCommand : IBenchCommand
                 hostMicrosPerCycle = Median(runs.Select(r => r.HostMicros)),
                 simMicrosPerCycle = Median(runs.Select(r => r.SimMicros)),
                 allocatedBytesPerCycle = Median(runs.Select(r => r.AllocPerCycle)),
+                threadCpuMicrosPerCycle = Median(runs.Select(r => r.ThreadCpuMicros)),
+                hostCpuMicrosPerCycle = Median(runs.Select(r => r.HostCpuMicros)),
             };
             var ratio = m.cyclesPerSecond / m.boundPerSecond;
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"{baud,9}  {m.cyclesPerSecond,8:F1}  {m.boundPerSecond,7:F1}  {ratio * 100,7:F1} %  {m.bytesPerCycle,11:F1}  {m.hostMicrosPerCycle,13:F1}  {m.simMicrosPerCycle,12:F1}  {m.allocatedBytesPerCycle,13:F1}"));
-            results.Add(new { m.baud, m.cyclesPerSecond, m.boundPerSecond, ratioOfBound = ratio, m.bytesPerCycle, m.hostMicrosPerCycle, m.simMicrosPerCycle, m.allocatedBytesPerCycle, runs = runs.Count });
+                $"{baud,9}  {m.cyclesPerSecond,8:F1}  {m.boundPerSecond,7:F1}  {ratio * 100,7:F1} %  {m.bytesPerCycle,11:F1}  {m.hostMicrosPerCycle,13:F1}  {m.simMicrosPerCycle,12:F1}  {m.allocatedBytesPerCycle,13:F1}  {m.threadCpuMicrosPerCycle,19:F1}  {m.hostCpuMicrosPerCycle,24:F2}"));
+            results.Add(new { m.baud, m.cyclesPerSecond, m.boundPerSecond, ratioOfBound = ratio, m.bytesPerCycle, m.hostMicrosPerCycle, m.simMicrosPerCycle, m.allocatedBytesPerCycle, m.threadCpuMicrosPerCycle, m.hostCpuMicrosPerCycle, runs = runs.Count });
         }
 
         if (outFile is not null)
@@ -77,6 +82,7 @@ internal sealed class BusBenchCommand : IBenchCommand
         var t0 = clock.GetTimestamp();
         var inside0 = link.InsideTicks;
         var alloc0 = GC.GetAllocatedBytesForCurrentThread();
+        var cpu0 = ThreadCpuClock.NowUs();
         var wall = Stopwatch.StartNew();
         var end = t0 + (long)(seconds * clock.TimestampFrequency);
         var k = 0;
@@ -89,17 +95,21 @@ internal sealed class BusBenchCommand : IBenchCommand
         }
 
         wall.Stop();
+        var cpuMicros = ThreadCpuClock.NowUs() - cpu0;
         var cycles = bus.Cycles - cycles0;
         var simulated = (clock.GetTimestamp() - t0) / (double)clock.TimestampFrequency;
         var bytesPerCycle = (sim.WireBytes - bytes0) / (double)cycles;
         var insideSeconds = (link.InsideTicks - inside0) / (double)Stopwatch.Frequency;
+        var hostShare = (wall.Elapsed.TotalSeconds - insideSeconds) / wall.Elapsed.TotalSeconds;
         return new RunResult(
             cycles / simulated,
             baud / 10.0 / bytesPerCycle,
             bytesPerCycle,
             (wall.Elapsed.TotalSeconds - insideSeconds) * 1e6 / cycles,
             insideSeconds * 1e6 / cycles,
-            (GC.GetAllocatedBytesForCurrentThread() - alloc0) / (double)cycles);
+            (GC.GetAllocatedBytesForCurrentThread() - alloc0) / (double)cycles,
+            cpuMicros / cycles,
+            cpuMicros * hostShare / cycles);
     }
 
     private static double Median(IEnumerable<double> values)
@@ -114,5 +124,5 @@ internal sealed class BusBenchCommand : IBenchCommand
         return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
     }
 
-    private sealed record RunResult(double CyclesPerSecond, double BoundPerSecond, double BytesPerCycle, double HostMicros, double SimMicros, double AllocPerCycle);
+    private sealed record RunResult(double CyclesPerSecond, double BoundPerSecond, double BytesPerCycle, double HostMicros, double SimMicros, double AllocPerCycle, double ThreadCpuMicros, double HostCpuMicros);
 }

@@ -309,6 +309,11 @@ void rcfw_module_poll(rcfw_module *m)
 {
     if (m->runtime_due) {
         m->runtime_due = 0;
+        /* pot_raw follows the pots every 1 ms while running (the host compares them with the positions), sampled
+         * here rather than in the control tick: each is a blocking ADC conversion */
+        for (uint8_t i = 0; i < m->n_motors; i++) {
+            rcfwi_ct_w16(m, MA(POT_RAW, i), rcfw_hal_adc_pot(m->port, i));
+        }
         uint8_t img[RCFW_RUNTIME_LEN];
         rcfwi_runtime_image(m, img);
         if (memcmp(img, m->runtime_saved, RCFW_RUNTIME_LEN) != 0) {

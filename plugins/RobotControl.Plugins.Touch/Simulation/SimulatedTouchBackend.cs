@@ -45,6 +45,9 @@ public sealed class SimulatedTouchBackend : ITouchBackend
     /// <summary>The hand model (for tests and displays).</summary>
     public HandModel Hand => _hand;
 
+    /// <summary>The force that pushed the hand on the last exchange, N (zero while <c>force_enable</c> is off).</summary>
+    public (double XN, double YN, double ZN) LastRenderedForce { get; private set; }
+
     /// <inheritdoc />
     public void Open()
     {
@@ -64,6 +67,7 @@ public sealed class SimulatedTouchBackend : ITouchBackend
         else
         {
             var (fx, fy, fz) = Limit(force);
+            LastRenderedForce = (fx, fy, fz);
             _hand.Step(timeSeconds - _lastTime, _pose, _handVelocity, fx, fy, fz);
         }
 

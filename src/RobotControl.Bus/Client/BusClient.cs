@@ -180,13 +180,7 @@ public sealed partial class BusClient : IDisposable
     }
 
     /// <summary>Writes <paramref name="data"/> at <paramref name="address"/> of module <paramref name="id"/> and waits for the acknowledgement.</summary>
-    public Reply Write(byte id, ushort address, ReadOnlySpan<byte> data)
-    {
-        var p = _params.AsSpan(0, 2 + data.Length);
-        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
-        data.CopyTo(p[2..]);
-        return Transact(id, Instruction.Write, p, 0);
-    }
+    public Reply Write(byte id, ushort address, ReadOnlySpan<byte> data) => WriteAt(Instruction.Write, id, address, data);
 
     /// <summary>Restarts a module (it answers before restarting).</summary>
     public Reply Reboot(byte id) => Transact(id, Instruction.Reboot, ReadOnlySpan<byte>.Empty, 0);

@@ -7,7 +7,7 @@ namespace RobotControl.Host.Harness;
 /// a bit-error rate on the wire, module resets (module named <c>arm.location</c> or by bus ID, at a run time), and
 /// the safety faults (<see cref="TimedFaultKind"/>): <c>stall=100ms@5s</c> (the host stops for that long),
 /// <c>stuck=right.elbow@5s</c> (locked rotor), <c>current=right.elbow@5s</c> (current spike at the sensor),
-/// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint), <c>silent=right.forearm@5s</c> (the module's
+/// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint), <c>pot=right.elbow@5s</c> (the joint pot fails), <c>silent=right.forearm@5s</c> (the module's
 /// replies stop).
 /// </summary>
 /// <param name="BitErrorRate">Probability that a bit on the wire flips.</param>
@@ -19,7 +19,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
     public static FaultInjection None { get; } = new(0, []);
 
     /// <summary>The syntax, for <c>--help</c> and messages.</summary>
-    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, nan=<plug-in>@<time>";
+    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, pot=<arm.motor>@<time>, nan=<plug-in>@<time>";
 
     /// <summary>The safety faults (empty when none).</summary>
     public IReadOnlyList<TimedFault> TimedFaults => Timed ?? [];
@@ -67,6 +67,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
                 case "stuck":
                 case "current":
                 case "nan":
+                case "pot":
                     timed.Add(ParseTimed(part, key, value));
                     break;
                 default:
@@ -91,7 +92,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
             throw new FormatException($"--inject '{part}': expected {key}=<{key switch { "stall" => "duration", "nan" => "plug-in", "silent" => "arm.location or id", _ => "arm.motor" }}>@<time>, e.g. {key}={key switch { "stall" => "100ms", "nan" => "ik_right", "silent" => "right.forearm", _ => "right.elbow" }}@5s");
         }
 
-        var kind = key switch { "silent" => TimedFaultKind.Silent, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, _ => TimedFaultKind.Nan };
+        var kind = key switch { "silent" => TimedFaultKind.Silent, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, "pot" => TimedFaultKind.Pot, _ => TimedFaultKind.Nan };
         var target = value[..at];
         var stall = kind == TimedFaultKind.Stall ? RunDuration.Parse(target) : TimeSpan.Zero;
         if (kind == TimedFaultKind.Stall && stall <= TimeSpan.Zero)
@@ -120,6 +121,9 @@ public enum TimedFaultKind
 
     /// <summary>A plug-in's arm gets NaN joint setpoints.</summary>
     Nan,
+
+    /// <summary>A motor's joint pot fails: its wiper opens and the ADC reads 0 whatever the joint does.</summary>
+    Pot,
 }
 
 /// <summary>One safety fault.</summary>

@@ -37,7 +37,7 @@ internal sealed class SafetyFaultSchedule
     /// <summary>Faults not applied yet.</summary>
     public int Remaining => _pending.Length - _next;
 
-    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (stall, stuck, current).</summary>
+    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (stall, stuck, current, pot).</summary>
     public void BeforeTick(long timestamp)
     {
         while (_next < _pending.Length && _pending[_next].At <= timestamp && _pending[_next].Fault.Kind != TimedFaultKind.Nan)
@@ -53,6 +53,9 @@ internal sealed class SafetyFaultSchedule
                     break;
                 case TimedFaultKind.Current:
                     p.Axis!.CurrentSenseOffsetA = CurrentSpikeLimits * p.Axis.Config.Motor.CurrentLimitA;
+                    break;
+                case TimedFaultKind.Pot:
+                    p.Axis!.PotFailedRaw = 0; // an open wiper pulled to ground
                     break;
             }
         }
@@ -73,6 +76,7 @@ internal sealed class SafetyFaultSchedule
         {
             case TimedFaultKind.Stuck:
             case TimedFaultKind.Current:
+            case TimedFaultKind.Pot:
                 var axis = sim.Axes.FirstOrDefault(a => string.Equals(a.Config.FullName, f.Target, StringComparison.OrdinalIgnoreCase))
                     ?? throw new FormatException($"--inject '{f}': no motor '{f.Target}' (known: {string.Join(", ", sim.Axes.Select(a => a.Config.FullName))})");
                 return new Pending(f, at, axis, -1);

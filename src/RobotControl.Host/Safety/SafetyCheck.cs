@@ -15,6 +15,9 @@ public enum SafetyCheck
     /// <summary>A motor's current over its limit for longer than the time.</summary>
     OverCurrent,
 
+    /// <summary>|joint pot position − encoder (Hall) position| beyond the limit for longer than the time.</summary>
+    PotMismatch,
+
     /// <summary>The cycle came too late: a gap of k loop periods or more since the previous one (a host stall).</summary>
     DeadlineMiss,
 
@@ -45,6 +48,7 @@ public static class SafetyNames
         SafetyCheck.ModuleSilent => "module_silent",
         SafetyCheck.TrackingError => "tracking_error",
         SafetyCheck.OverCurrent => "over_current",
+        SafetyCheck.PotMismatch => "pot_mismatch",
         SafetyCheck.DeadlineMiss => "deadline_miss",
         SafetyCheck.ModuleFault => "module_fault",
         SafetyCheck.Operator => "operator",

@@ -18,13 +18,28 @@ public sealed record SafetyLimits
     /// <summary>How long the current may stay over its limit, ms (default 50, as the dVRK's current check).</summary>
     public double OverCurrentMs { get; init; } = 50;
 
+    /// <summary>Largest |pot position − encoder position| of a motor, output radians (default 0.087 rad, 5°, as the dVRK's check).</summary>
+    public double PotDistanceRad { get; init; } = 5 * Math.PI / 180;
+
+    /// <summary>How long the pot and the encoder may disagree, ms (default 10, as the dVRK's check).</summary>
+    public double PotMismatchMs { get; init; } = 10;
+
     /// <summary>How long a module may stay silent, ms (default 10).</summary>
     public double ModuleSilentMs { get; init; } = 10;
 
     /// <summary>Loop periods without a cycle that count as a stall (k consecutive deadline misses; default 10).</summary>
     public int DeadlineMissesInARow { get; init; } = 10;
 
-    /// <summary>Safe state per check (defaults: hold for soft trips; torque off for a silent module, over-current and module faults).</summary>
+    /// <summary>Per-motor thresholds that override the robot-wide ones, by motor name (<c>arm.motor</c>, e.g. <c>right.elbow</c>).</summary>
+    public IReadOnlyDictionary<string, MotorSafetyLimits> Motors { get; init; } = new Dictionary<string, MotorSafetyLimits>();
+
+    /// <summary>The tracking-error limit of motor <paramref name="motor"/> (its own, else <see cref="TrackingErrorRad"/>).</summary>
+    public double TrackingErrorRadOf(string motor) => Motors.TryGetValue(motor, out var m) && m.TrackingErrorRad is { } v ? v : TrackingErrorRad;
+
+    /// <summary>The pot/encoder distance limit of motor <paramref name="motor"/> (its own, else <see cref="PotDistanceRad"/>).</summary>
+    public double PotDistanceRadOf(string motor) => Motors.TryGetValue(motor, out var m) && m.PotDistanceRad is { } v ? v : PotDistanceRad;
+
+    /// <summary>Safe state per check (defaults: hold for soft trips; torque off for a silent module, over-current, a pot/encoder mismatch and module faults).</summary>
     public IReadOnlyDictionary<SafetyCheck, SafeState> SafeStates { get; init; } = DefaultSafeStates;
 
     /// <summary>The defaults of <see cref="SafeStates"/>.</summary>
@@ -34,6 +49,7 @@ public sealed record SafetyLimits
         [SafetyCheck.ModuleSilent] = SafeState.TorqueOff,
         [SafetyCheck.TrackingError] = SafeState.Hold,
         [SafetyCheck.OverCurrent] = SafeState.TorqueOff,
+        [SafetyCheck.PotMismatch] = SafeState.TorqueOff,
         [SafetyCheck.DeadlineMiss] = SafeState.Hold,
         [SafetyCheck.ModuleFault] = SafeState.TorqueOff,
         [SafetyCheck.Operator] = SafeState.Hold,
@@ -42,3 +58,8 @@ public sealed record SafetyLimits
     /// <summary>The safe state of <paramref name="check"/>.</summary>
     public SafeState SafeStateOf(SafetyCheck check) => SafeStates.TryGetValue(check, out var s) ? s : DefaultSafeStates[check];
 }
+
+/// <summary>A motor's own thresholds (null: the robot-wide one).</summary>
+/// <param name="TrackingErrorRad">Largest |goal sent − measured position|, output radians.</param>
+/// <param name="PotDistanceRad">Largest |pot position − encoder position|, output radians.</param>
+public sealed record MotorSafetyLimits(double? TrackingErrorRad, double? PotDistanceRad);

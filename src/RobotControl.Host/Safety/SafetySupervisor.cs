@@ -29,10 +29,14 @@ public sealed class SafetySupervisor
     private readonly string[] _controllerNames;
     private readonly long[] _trackingSince;
     private readonly long[] _currentSince;
+    private readonly long[] _potSince;
+    private readonly double[] _trackingLimit;
+    private readonly double[] _potLimit;
     private readonly long[] _answeredAt;
     private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
     private readonly long _trackingTicks;
     private readonly long _currentTicks;
+    private readonly long _potTicks;
     private readonly long _silentTicks;
     private readonly long _stallTicks;
     private long _lastCycle;
@@ -59,10 +63,14 @@ public sealed class SafetySupervisor
         _controllerNames = [.. _controllers.Select(c => $"{ArmName(robot, c)}.{c.Definition.Location}")];
         _trackingSince = new long[_motors.Length];
         _currentSince = new long[_motors.Length];
+        _potSince = new long[_motors.Length];
+        _trackingLimit = [.. _motorNames.Select(limits.TrackingErrorRadOf)];
+        _potLimit = [.. _motorNames.Select(limits.PotDistanceRadOf)];
         _answeredAt = new long[_controllers.Length];
         var f = _time.TimestampFrequency;
         _trackingTicks = (long)(limits.TrackingErrorMs * 1e-3 * f);
         _currentTicks = (long)(limits.OverCurrentMs * 1e-3 * f);
+        _potTicks = (long)(limits.PotMismatchMs * 1e-3 * f);
         _silentTicks = (long)(limits.ModuleSilentMs * 1e-3 * f);
         _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
         Origin = _time.GetTimestamp();
@@ -245,6 +253,7 @@ public sealed class SafetySupervisor
 
         Array.Clear(_trackingSince);
         Array.Clear(_currentSince);
+        Array.Clear(_potSince);
         _levels.MoveTo(RunLevel.Init, source, "operator reset: motors off, faults cleared; homing needed before motion");
     }
 
@@ -297,9 +306,10 @@ public sealed class SafetySupervisor
         }
 
         var driven = _robot.State == RobotState.Enabled;
+        var homed = Level is RunLevel.PedalUp or RunLevel.PedalDown;
         for (var i = 0; i < _motors.Length; i++)
         {
-            CheckMotor(i, driven, now);
+            CheckMotor(i, driven, homed, now);
         }
     }
 
@@ -319,7 +329,7 @@ public sealed class SafetySupervisor
         }
     }
 
-    private void CheckMotor(int i, bool driven, long now)
+    private void CheckMotor(int i, bool driven, bool homed, long now)
     {
         var m = _motors[i];
         var position = m.PositionRad;
@@ -331,9 +341,14 @@ public sealed class SafetySupervisor
         }
 
         var error = Math.Abs(_robot.SentGoalRad(m) - position);
-        Persist(ref _trackingSince[i], driven && error > Limits.TrackingErrorRad, now, _trackingTicks, SafetyCheck.TrackingError, i, error, Limits.TrackingErrorRad, "rad");
+        Persist(ref _trackingSince[i], driven && error > _trackingLimit[i], now, _trackingTicks, SafetyCheck.TrackingError, i, error, _trackingLimit[i], "rad");
         var limit = Limits.CurrentLimitFraction * m.CurrentLimitA;
         Persist(ref _currentSince[i], Math.Abs(current) > limit, now, _currentTicks, SafetyCheck.OverCurrent, i, Math.Abs(current), limit, "A");
+
+        // Pot against encoder once the positions are trusted (after homing); the pot is read at the pot poll's rate.
+        var pot = m.PotPositionRad;
+        var distance = Math.Abs(pot - position);
+        Persist(ref _potSince[i], homed && double.IsFinite(pot) && distance > _potLimit[i], now, _potTicks, SafetyCheck.PotMismatch, i, distance, _potLimit[i], "rad");
     }
 
     private void Persist(ref long since, bool beyond, long now, long allowed, SafetyCheck check, int motor, double measured, double limit, string unit)

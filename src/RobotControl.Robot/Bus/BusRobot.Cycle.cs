@@ -124,7 +124,8 @@ public sealed partial class BusRobot
     /// <summary>
     /// Cycle step <b>update</b>: publishes what <see cref="Read"/> received (joint positions through the inverse
     /// coupling, currents, missing modules) to the port, then supervises the modules: the status poll every
-    /// <see cref="BusRobotOptions.StatusPollCycles"/> cycles or on an alert, and a search for missing modules every
+    /// <see cref="BusRobotOptions.StatusPollCycles"/> cycles or on an alert, the joint pots every
+    /// <see cref="BusRobotOptions.PotPollCycles"/>, and a search for missing modules every
     /// <see cref="BusRobotOptions.ReprobeCycles"/>.
     /// </summary>
     public void Update()
@@ -139,6 +140,11 @@ public sealed partial class BusRobot
         if (present && cycle % _options.StatusPollCycles == 0)
         {
             PollStatus();
+        }
+
+        if (present && IsPotPollCycle(cycle))
+        {
+            PollPots();
         }
 
         if (cycle % _options.ReprobeCycles == 0)

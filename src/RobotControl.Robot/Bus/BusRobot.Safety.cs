@@ -30,6 +30,9 @@ public sealed partial class BusRobot
     /// <summary>True while the goals are frozen at the measured positions (<see cref="HoldAtMeasured"/>).</summary>
     public bool IsHolding => _hold != 0;
 
+    /// <summary>Teleoperation drives the arms only while nothing holds them (<see cref="IsHolding"/>): see <see cref="RobotControl.Robot.Control.IRobotPort.TeleopAllowed"/>.</summary>
+    public bool TeleopAllowed => _hold == 0;
+
     /// <summary>
     /// Freezes every motor's goal at its measured position from the next write on; the joint setpoints are ignored
     /// until <see cref="ReleaseHold"/>.

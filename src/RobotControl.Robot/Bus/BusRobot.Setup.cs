@@ -295,5 +295,6 @@ public sealed partial class BusRobot
         }).ToArray();
         _statusData = new byte[_ids.Length * 2];
         _statusReplies = new Reply[_ids.Length];
+        ResizePotBuffers();
     }
 }

@@ -56,6 +56,9 @@ public sealed partial class BusRobot : IRobotPort, IBusCycle, IDisposable
     private readonly int _feedbackStride;
     private readonly int _goalLength;
     private readonly ushort _statusAddress;
+    private readonly ushort _potAddress;
+    private readonly int _potStride;
+    private readonly int _potLength;
     private readonly ushort _resetCauseAddress;
     private readonly ushort _watchdogAddress;
     private readonly ushort _torqueAddress;
@@ -150,6 +153,10 @@ public sealed partial class BusRobot : IRobotPort, IBusCycle, IDisposable
         _feedbackAddress = position.At(0);
         _feedbackStride = position.Stride;
         _statusAddress = _table["hardware_error_status"].At(0);
+        var pot = _table["pot_raw"];
+        _potAddress = pot.At(0);
+        _potStride = pot.Stride;
+        _potLength = ((maxChannels - 1) * pot.Stride) + pot.Size;
         _resetCauseAddress = _table["reset_cause"].At(0);
         _watchdogAddress = _table["bus_watchdog"].At(0);
         _torqueAddress = _table["torque_enable"].At(0);

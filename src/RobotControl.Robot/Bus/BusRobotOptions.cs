@@ -6,6 +6,12 @@ public sealed record BusRobotOptions
     /// <summary>Read every module's error status and reset cause every this many cycles (resets raise no alert).</summary>
     public int StatusPollCycles { get; init; } = 8;
 
+    /// <summary>
+    /// Read every module's joint pots (<c>pot_raw</c>) every this many cycles, half-way between status polls: one sync
+    /// read, for the supervisor's pot/encoder check (<see cref="RobotMotor.PotPositionRad"/>). 0: never.
+    /// </summary>
+    public int PotPollCycles { get; init; } = 16;
+
     /// <summary>Cycles a module may miss in a row before it is reported missing.</summary>
     public int MissingAfterCycles { get; init; } = 3;
 

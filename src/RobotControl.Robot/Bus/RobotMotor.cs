@@ -12,12 +12,15 @@ public sealed class RobotMotor
     private double _position;
     private double _current;
     private double _manualSetpoint = double.NaN;
+    private double _potPosition = double.NaN;
     private double _jogRate;
     private int _manual;
+    private readonly PotCalibrationTable _potCalibration;
 
     internal RobotMotor(MotorConfig config, RobotController controller, int index)
     {
         Config = config;
+        _potCalibration = PotCalibrationTable.For(config);
         Controller = controller;
         Index = index;
     }
@@ -108,6 +111,21 @@ public sealed class RobotMotor
         }
 
         return goal;
+    }
+
+    /// <summary>
+    /// The position the joint pot reads, output radians, through the calibration the robot file gives this motor
+    /// (the one its module holds); NaN before the first pot poll (<see cref="BusRobotOptions.PotPollCycles"/>) or
+    /// without a pot calibration.
+    /// </summary>
+    public double PotPositionRad => Volatile.Read(ref _potPosition);
+
+    internal void PublishPot(int raw)
+    {
+        if (_potCalibration.IsCalibrated)
+        {
+            Volatile.Write(ref _potPosition, Config.ToRadians(_potCalibration.PositionAt(raw)));
+        }
     }
 
     internal void Publish(double positionRad, double currentA)

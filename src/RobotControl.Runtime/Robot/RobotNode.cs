@@ -9,7 +9,8 @@ namespace RobotControl.Runtime.Robot;
 /// The robot as a graph instance (named <see cref="InstanceName"/>): inputs are joint setpoints per arm
 /// (<c>right.elbow</c>, radians, in the arm's own right-arm model) and the jaw (<c>right.jaw</c>); outputs are the
 /// joint positions the modules report (<c>right.elbow.position</c>), motor currents (<c>right.elbow.current</c>, A)
-/// and the robot's fault flags (<c>faults</c>). Talks to an <see cref="IRobotPort"/> without blocking or allocating.
+/// the robot's fault flags (<c>faults</c>) and <c>teleop_enabled</c> (1 while the run level lets teleoperation drive
+/// the arms: the haptic handles' <c>force_enable</c>). Talks to an <see cref="IRobotPort"/> without blocking or allocating.
 /// <para>
 /// Safety: when anything upstream has faulted the robot holds position (once, then stays held); a non-finite
 /// setpoint is never written (the arm holds and <see cref="RejectedSetpoints"/> counts it). Arms without a wired
@@ -27,6 +28,7 @@ public sealed class RobotNode : Plugin
     private readonly OutputPort[][] _positions;
     private readonly OutputPort[][] _currents;
     private readonly OutputPort _faults;
+    private readonly OutputPort _teleopEnabled;
     private readonly double[] _joints;
     private readonly double[] _currentValues;
     private readonly double[][] _commanded;
@@ -65,6 +67,7 @@ public sealed class RobotNode : Plugin
         }
 
         _faults = DeclareOutput("faults", SafeValue.HoldLastFinite, "", "robot fault flags (RobotFaults)");
+        _teleopEnabled = DeclareOutput("teleop_enabled", SafeValue.Zero, "", "1 while the run level lets teleoperation drive the arms, else 0 (wire it to the haptic handles' force_enable)");
         _joints = new double[jointCount];
         _currentValues = new double[robot.Actuators.Count];
         _commandedThisTick = new bool[arms];
@@ -136,6 +139,7 @@ public sealed class RobotNode : Plugin
         }
 
         Write(_faults, (int)port.Faults);
+        Write(_teleopEnabled, port.TeleopAllowed && !UpstreamFaulted ? 1 : 0);
         if (UpstreamFaulted)
         {
             if (!Holding)

@@ -33,15 +33,34 @@ public sealed class SafetyConfigTests
     }
 
     [Fact]
+    public void Thresholds_per_motor_override_the_robot_wide_ones_and_an_unknown_motor_is_refused_in_one_line()
+    {
+        using var doc = JsonDocument.Parse("""{ "pot_distance_rad": 0.1, "motors": { "right.elbow": { "tracking_error_rad": 0.2 }, "left.elbow": { "pot_distance_rad": 0.3 } } }""");
+        var limits = SafetySection.Parse(doc.RootElement, "r.json", ["right.elbow", "left.elbow"]);
+        Assert.Equal(0.2, limits.TrackingErrorRadOf("right.elbow"));
+        Assert.Equal(0.1, limits.PotDistanceRadOf("right.elbow"));
+        Assert.Equal(0.3, limits.PotDistanceRadOf("left.elbow"));
+        Assert.Equal(new SafetyLimits().TrackingErrorRad, limits.TrackingErrorRadOf("left.elbow"));
+        Assert.Equal(5 * Math.PI / 180, new SafetyLimits().PotDistanceRadOf("right.elbow"));
+
+        using var unknown = JsonDocument.Parse("""{ "motors": { "right.knee": { "tracking_error_rad": 0.2 } } }""");
+        Assert.Equal("r.json: safety.motors.right.knee: no such motor (known: right.elbow)", Assert.Throws<FormatException>(() => SafetySection.Parse(unknown.RootElement, "r.json", ["right.elbow"])).Message);
+        using var bad = JsonDocument.Parse("""{ "motors": { "right.elbow": { "pot_distance_rad": 0 } } }""");
+        Assert.Equal("r.json: safety.motors.right.elbow.pot_distance_rad: expected a number from 1E-06 to 6.283185307179586, got 0", Assert.Throws<FormatException>(() => SafetySection.Parse(bad.RootElement, "r.json", ["right.elbow"])).Message);
+        using var field = JsonDocument.Parse("""{ "motors": { "right.elbow": { "current_limit_fraction": 1 } } }""");
+        Assert.Contains("safety.motors.right.elbow.current_limit_fraction: unknown field", Assert.Throws<FormatException>(() => SafetySection.Parse(field.RootElement, "r.json", ["right.elbow"])).Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void Inject_parses_the_safety_faults_and_keeps_ber_and_reset()
     {
-        var f = FaultInjection.Parse("ber=1e-5,reset=right.shoulder@5s,stall=100ms@5s,stuck=right.elbow@5s,current=right.elbow@2.5s,nan=ik_right@5s");
+        var f = FaultInjection.Parse("ber=1e-5,reset=right.shoulder@5s,stall=100ms@5s,stuck=right.elbow@5s,current=right.elbow@2.5s,nan=ik_right@5s,pot=right.elbow@5s");
         Assert.Equal(1e-5, f.BitErrorRate);
         Assert.Single(f.Resets);
-        Assert.Equal([TimedFaultKind.Stall, TimedFaultKind.Stuck, TimedFaultKind.Current, TimedFaultKind.Nan], f.TimedFaults.Select(t => t.Kind));
+        Assert.Equal([TimedFaultKind.Stall, TimedFaultKind.Stuck, TimedFaultKind.Current, TimedFaultKind.Nan, TimedFaultKind.Pot], f.TimedFaults.Select(t => t.Kind));
         Assert.Equal(TimeSpan.FromMilliseconds(100), f.TimedFaults[0].Duration);
         Assert.Equal(TimeSpan.FromSeconds(2.5), f.TimedFaults[2].At);
-        Assert.Equal("ber=1E-05,reset=right.shoulder@5s,stall=100ms@5s,stuck=right.elbow@5s,current=right.elbow@2.5s,nan=ik_right@5s", f.ToString());
+        Assert.Equal("ber=1E-05,reset=right.shoulder@5s,stall=100ms@5s,stuck=right.elbow@5s,current=right.elbow@2.5s,nan=ik_right@5s,pot=right.elbow@5s", f.ToString());
         Assert.Contains("expected stuck=<arm.motor>@<time>", Assert.Throws<FormatException>(() => FaultInjection.Parse("stuck=right.elbow")).Message, StringComparison.Ordinal);
         Assert.Contains("unknown fault", Assert.Throws<FormatException>(() => FaultInjection.Parse("melt=right.elbow@1s")).Message, StringComparison.Ordinal);
     }

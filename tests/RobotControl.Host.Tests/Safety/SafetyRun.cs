@@ -2,14 +2,17 @@ using RobotControl.Bus.Protocol;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Plugins;
 using RobotControl.Host.Safety;
+using RobotControl.Plugins.Touch;
+using RobotControl.Plugins.Touch.Simulation;
 
 namespace RobotControl.Host.Tests.Safety;
 
 /// <summary>A headless virtual run of the shipped teleop graph with faults injected, its goal frames and the virtual modules read back at the end.</summary>
 internal sealed class SafetyRun
 {
-    private SafetyRun(RunReport report, GoalFrameSpy spy, double originS, RunLevel level, IReadOnlyList<MotorEnd> motors)
+    private SafetyRun(RunReport report, GoalFrameSpy spy, double originS, RunLevel level, IReadOnlyList<MotorEnd> motors, double lastForceS)
     {
+        LastForceS = lastForceS;
         Report = report;
         Spy = spy;
         OriginS = originS;
@@ -28,6 +31,9 @@ internal sealed class SafetyRun
 
     public IReadOnlyList<MotorEnd> Motors { get; }
 
+    /// <summary>Run time of the last tick on which a simulated haptic handle rendered a non-zero force, s (-inf: none).</summary>
+    public double LastForceS { get; }
+
     public SafetyReport Safety => Report.Safety!;
 
     public static SafetyRun Of(string inject, double seconds, string? graph = null)
@@ -35,17 +41,31 @@ internal sealed class SafetyRun
         var goal = ControlTable.Firmware["goal_position"];
         GoalFrameSpy? spy = null;
         double origin = 0;
+        var lastForceS = double.NegativeInfinity;
         var level = RunLevel.Init;
         var motors = new List<MotorEnd>();
+        var lastForceAt = long.MinValue;
         var report = HeadlessRun.RunVirtual(
             new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject) },
             HostPlugins.Catalog(),
             new VirtualRunHooks
             {
                 WrapLink = (link, clock) => spy = new GoalFrameSpy(link, clock, goal.At(0), goal.Stride),
+                AroundTick = (loop, at) =>
+                {
+                    loop.Step();
+                    foreach (var touch in loop.Program.Order.OfType<TouchPlugin>())
+                    {
+                        if (touch.Backend is SimulatedTouchBackend { LastRenderedForce: var f } && (f.XN != 0 || f.YN != 0 || f.ZN != 0))
+                        {
+                            lastForceAt = at;
+                        }
+                    }
+                },
                 AfterRun = session =>
                 {
                     origin = session.Supervisor.Origin / (double)session.Clock.TimestampFrequency;
+                    lastForceS = lastForceAt == long.MinValue ? double.NegativeInfinity : (lastForceAt - session.Supervisor.Origin) / (double)session.Clock.TimestampFrequency;
                     level = session.Supervisor.Level;
                     foreach (var m in session.Robot.Motors)
                     {
@@ -54,7 +74,40 @@ internal sealed class SafetyRun
                     }
                 },
             });
-        return new SafetyRun(report, spy!, origin, level, motors);
+        return new SafetyRun(report, spy!, origin, level, motors, lastForceS);
+    }
+
+    /// <summary>A run of the shipped teleop graph on a copy of its robot file with <paramref name="safety"/> as its <c>safety</c> section.</summary>
+    public static SafetyRun WithSafetySection(string safety, string inject, double seconds)
+    {
+        var dir = Directory.CreateTempSubdirectory("safety-");
+        try
+        {
+            return Of(inject, seconds, GraphWithSafetySection(dir.FullName, safety));
+        }
+        finally
+        {
+            dir.Delete(recursive: true);
+        }
+    }
+
+    /// <summary>
+    /// Writes into <paramref name="dir"/> the shipped teleop graph on a copy of its robot file with
+    /// <paramref name="safety"/> as its <c>safety</c> section; returns the graph's path.
+    /// </summary>
+    private static string GraphWithSafetySection(string dir, string safety)
+    {
+        var source = Graphs.Path("teleop-lb.json");
+        var robotPath = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(source)!, "../hardware/robots/lb-1.0.json"));
+        var components = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(robotPath)!, "../components")).Replace('\\', '/');
+        var robot = File.ReadAllText(robotPath).Replace("\"../components/", $"\"{components}/", StringComparison.Ordinal).TrimEnd();
+        robot = robot[..robot.LastIndexOf('}')] + $", \"safety\": {safety} }}";
+        File.WriteAllText(Path.Combine(dir, "lb.json"), robot);
+        var graph = Path.Combine(dir, "teleop.json");
+        File.WriteAllText(graph, File.ReadAllText(source)
+            .Replace("\"../hardware/robots/lb-1.0.json\"", "\"lb.json\"", StringComparison.Ordinal)
+            .Replace("\"trajectories/", $"\"{Path.GetDirectoryName(source)!.Replace('\\', '/')}/trajectories/", StringComparison.Ordinal));
+        return graph;
     }
 
     /// <summary>The first trip of <paramref name="check"/> (fails the test if none).</summary>

@@ -45,17 +45,27 @@ public sealed class RobotNodeTests
     }
 
     [Fact]
+    public void Teleop_enabled_follows_the_port_s_run_level_and_drops_when_an_upstream_plugin_faults()
+    {
+        var (port, node, program) = ElbowDriven(throwAt: 10);
+
+        program.Start(Ticks.At(0));
+        var seen = new double[12];
+        for (var i = 0; i < seen.Length; i++)
+        {
+            port.TeleopAllowed = i is not (3 or 4); // e.g. a trip at tick 3, reset before tick 5
+            program.Tick(Ticks.At(i));
+            seen[i] = node.GetOutput("teleop_enabled");
+        }
+
+        // The source faults at tick 10: the robot holds, and teleoperation stays off.
+        Assert.Equal([1, 1, 1, 0, 0, 1, 1, 1, 1, 1, 0, 0], seen);
+    }
+
+    [Fact]
     public void When_an_upstream_plugin_faults_the_robot_holds_position_and_is_sent_nothing_more()
     {
-        var port = new KinematicRobotPort(Repo.Lb);
-        var node = new RobotNode(Repo.Lb, TimeProvider.System, Repo.Root);
-        node.Attach(port);
-        var graph = new PluginGraph();
-        graph.Add(node);
-        graph.Add(new ElbowSource(throwAt: 10));
-        graph.Connect("src.elbow", "robot.right.elbow");
-        node.SetDriven(graph.Wires.Select(w => w.To));
-        var program = graph.Compile();
+        var (port, node, program) = ElbowDriven(throwAt: 10);
 
         Ticks.Run(program, 20);
 
@@ -66,5 +76,19 @@ public sealed class RobotNodeTests
         port.ReadJointPositions(0, q);
         Assert.Equal(0.509, q[3], 9); // where tick 9 put it
         Assert.Equal(Repo.Lb.Joints[0].MidRad, q[0], 9); // unwired joints kept the position read at start
+    }
+
+    /// <summary>The robot node on a kinematic port, its right elbow driven by a source that throws at tick <paramref name="throwAt"/>.</summary>
+    private static (KinematicRobotPort Port, RobotNode Node, GraphProgram Program) ElbowDriven(long throwAt)
+    {
+        var port = new KinematicRobotPort(Repo.Lb);
+        var node = new RobotNode(Repo.Lb, TimeProvider.System, Repo.Root);
+        node.Attach(port);
+        var graph = new PluginGraph();
+        graph.Add(node);
+        graph.Add(new ElbowSource(throwAt));
+        graph.Connect("src.elbow", "robot.right.elbow");
+        node.SetDriven(graph.Wires.Select(w => w.To));
+        return (port, node, graph.Compile());
     }
 }

@@ -42,4 +42,7 @@ internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort
     public void ReadMotorCurrents(int arm, Span<double> currentsA) => currentsA.Clear();
 
     public void HoldPosition() => Holds++;
+
+    /// <summary>What <see cref="IRobotPort.TeleopAllowed"/> answers (a supervisor's run level).</summary>
+    public bool TeleopAllowed { get; set; } = true;
 }

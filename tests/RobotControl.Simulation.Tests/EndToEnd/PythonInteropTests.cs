@@ -28,5 +28,10 @@ public sealed class PythonInteropTests
         Assert.DoesNotContain("FAIL", text, StringComparison.Ordinal);
         Assert.Contains("ok   fast bulk read: one packet, each part with its CRC", text, StringComparison.Ordinal);
         Assert.Contains("ok   bulk write applied (second module)", text, StringComparison.Ordinal);
+        Assert.Contains("ok   sync write applied (second module)", text, StringComparison.Ordinal);
+        Assert.Contains("ok   broadcast action applied (second module)", text, StringComparison.Ordinal);
+        Assert.Contains("ok   reply data FF FF FD FF comes stuffed (FF FF FD FD FF)", text, StringComparison.Ordinal);
+        Assert.Contains("ok   alert bit set once the watchdog expired", text, StringComparison.Ordinal);
+        Assert.Contains("ok   after the factory reset: kp back at its default 256, same ID and baud", text, StringComparison.Ordinal);
     }
 }

@@ -51,13 +51,31 @@ internal sealed class BusOptions
     /// </summary>
     public int Run(ParseResult parse, Func<RobotConnection, int> body)
     {
+        ArgumentNullException.ThrowIfNull(body);
+        return Guard(parse, () =>
+        {
+            var line = Line(parse);
+            using var session = RobotConnection.Open(parse.GetValue(_transport)!, line.RobotFile, line.Options);
+            return body(session);
+        });
+    }
+
+    /// <summary>The parsed transport, robot file and client timing, re-openable at another baud.</summary>
+    public BusLine Line(ParseResult parse)
+    {
+        ArgumentNullException.ThrowIfNull(parse);
+        var margin = TimeSpan.FromMilliseconds(parse.GetValue(_marginMs));
+        return new BusLine(parse.GetValue(_transport)!, parse.GetValue(_robot)?.FullName, new BusClientOptions { ResponseMargin = margin });
+    }
+
+    /// <summary>Runs <paramref name="body"/>, turning the expected failures into one line on the error stream and exit code 2.</summary>
+    public static int Guard(ParseResult parse, Func<int> body)
+    {
         ArgumentNullException.ThrowIfNull(parse);
         ArgumentNullException.ThrowIfNull(body);
         try
         {
-            var margin = TimeSpan.FromMilliseconds(parse.GetValue(_marginMs));
-            using var session = RobotConnection.Open(parse.GetValue(_transport)!, parse.GetValue(_robot)?.FullName, new BusClientOptions { ResponseMargin = margin });
-            return body(session);
+            return body();
         }
         catch (Exception ex) when (ex is FormatException or IOException or ArgumentException or KeyNotFoundException or Hardware.Loading.RobotDataException or InvalidOperationException)
         {

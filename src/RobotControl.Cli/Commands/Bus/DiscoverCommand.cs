@@ -6,6 +6,7 @@ namespace RobotControl.Cli.Commands.Bus;
 /// <c>robotctl discover &lt;transport&gt; [--robot file]</c>: broadcast-pings the bus; with a robot file, reports
 /// missing, unknown and mismatched modules and parameters that differ from the file; <c>--clear-faults</c> names and
 /// clears latched module errors. Exit 1 when anything differs.
+/// <c>--scan-bauds [--yes]</c>: looks at every supported baud instead (<see cref="BaudScan"/>).
 /// </summary>
 internal sealed class DiscoverCommand : ICliCommand
 {
@@ -16,9 +17,20 @@ internal sealed class DiscoverCommand : ICliCommand
         var busOptions = new BusOptions(command);
         var clearFaults = new Option<bool>("--clear-faults") { Description = "With a robot file: say which modules have a latched error (e.g. a tripped bus watchdog), then clear it" };
         command.Options.Add(clearFaults);
+        var scanBauds = new Option<bool>("--scan-bauds") { Description = "Look for modules at every baud the control table supports; with --robot, offer to bring strays back to the file's baud" };
+        var yes = new Option<bool>("--yes") { Description = "With --scan-bauds: bring the robot's modules found at another baud back to the robot file's baud" };
+        command.Options.Add(scanBauds);
+        command.Options.Add(yes);
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
+            if (parse.GetValue(scanBauds) || parse.GetValue(yes))
+            {
+                return BusOptions.Guard(parse, () => parse.GetValue(scanBauds)
+                    ? BaudScan.Run(busOptions.Line(parse), parse.GetValue(yes), output)
+                    : throw new ArgumentException("--yes: only with --scan-bauds (it confirms bringing modules back to the robot file's baud)"));
+            }
+
             return busOptions.Run(parse, session =>
             {
                 if (session.Robot is null)

@@ -7,14 +7,12 @@ namespace RobotControl.Cli.Commands.Bus;
 
 /// <summary>
 /// The checks <c>params set</c> makes before anything is stored (see <see cref="ParameterRules"/>): each value against
-/// the control table, confirmation for the fields that change how the module is reached (<c>baud_rate</c>, <c>id</c>),
-/// and the cross-field rules on the module's table as read from it with the new values applied.
+/// the control table, confirmation for the fields that change how the module is reached (<c>id</c>; <c>baud_rate</c> is
+/// changed on the whole bus by <see cref="BaudChange"/>), and the cross-field rules on the module's table as read from it
+/// with the new values applied.
 /// </summary>
 internal static class ParameterGuard
 {
-    /// <summary>Fields whose change makes the module answer elsewhere: they need <c>--yes</c>.</summary>
-    private static readonly string[] Addressing = ["baud_rate", "id"];
-
     /// <summary>Checks one write; throws with the reason when it must not happen.</summary>
     /// <exception cref="ArgumentException">The value, field, motor or confirmation is wrong.</exception>
     /// <exception cref="IOException">The module does not answer.</exception>
@@ -32,18 +30,10 @@ internal static class ParameterGuard
                 : $"--motor: {field.Name} has motors 0..{field.Count - 1}");
         }
 
-        if (field.Name == "baud_rate")
+        // A new ID makes the module answer elsewhere (a baud change never comes here: BaudChange moves the whole bus).
+        if (field.Name == "id" && !confirmed)
         {
-            var rate = ModuleParameters.BaudFromCode((int)value);
-            if (rate < RobotControl.Bus.Transports.LinkUri.DefaultBaud)
-            {
-                throw new ArgumentException($"--value: baud_rate {value} ({rate} baud) is below the 1 Mbaud the bus is designed for; use a code from {ModuleParameters.BaudCode(RobotControl.Bus.Transports.LinkUri.DefaultBaud)} ({RobotControl.Bus.Transports.LinkUri.DefaultBaud} baud) up");
-            }
-        }
-
-        if (Addressing.Contains(field.Name) && !confirmed)
-        {
-            throw new ArgumentException($"--field {field.Name}: the module will answer only at the new {(field.Name == "id" ? "ID" : "baud rate")} after this write; add --yes to confirm");
+            throw new ArgumentException("--field id: the module will answer only at the new ID after this write; add --yes to confirm");
         }
 
         if (client.Ping(id, out _).Outcome != ReplyOutcome.Ok)

@@ -79,7 +79,7 @@ internal sealed class ParamsCommand : ICliCommand
         var writable = table.Fields.Where(f => f.Writable).ToArray();
         var value = CliOption.OptionalNumber("--value", "Value in the field's units (see docs/protocol.md); checked against the field's own range", writable.Min(f => (long)f.Min), writable.Max(f => (long)f.Max));
         var fromFile = new Option<bool>("--from-robot-file") { Description = "Write every parameter the robot file implies into every module" };
-        var yes = new Option<bool>("--yes") { Description = "Confirm a write of baud_rate or id (the module then answers only at the new rate or ID)" };
+        var yes = new Option<bool>("--yes") { Description = "Confirm a write of id (the module then answers only at the new ID) or a change of baud_rate (every module, then the host; verified by ping)" };
         var command = new Command("set", "Write one parameter (--module --field [--motor] --value) or all of them (--from-robot-file) into FRAM.");
         var busOptions = new BusOptions(command);
         foreach (var o in new Option[] { module, field, motor, value, fromFile, yes })
@@ -96,6 +96,7 @@ internal sealed class ParamsCommand : ICliCommand
                 bus.Discover();
                 if (parse.GetValue(fromFile))
                 {
+                    RequireFileBaud(session);
                     foreach (var c in bus.Controllers.Where(c => c.Present))
                     {
                         ParameterGuard.CheckAll(session.Client, table, c.Id, ModuleParameters.For(session.Definition!, c.Definition, table));
@@ -105,9 +106,14 @@ internal sealed class ParamsCommand : ICliCommand
                     return 0;
                 }
 
+                if (parse.GetValue(field) == "baud_rate" && parse.GetValue(value) is { } code)
+                {
+                    return BaudChange.Run(session, busOptions.Line(parse), code, (parse.GetValue(module) is not null, parse.GetValue(motor)), parse.GetValue(yes), output);
+                }
+
                 if (parse.GetValue(module) is not { } id || parse.GetValue(field) is not { } name || parse.GetValue(value) is not { } v)
                 {
-                    throw new ArgumentException("give --module, --field and --value (or --from-robot-file)");
+                    throw new ArgumentException("give --module, --field and --value (or --from-robot-file; baud_rate: --field and --value, every module at once)");
                 }
 
                 if (!table.Contains(name))
@@ -122,5 +128,19 @@ internal sealed class ParamsCommand : ICliCommand
             });
         });
         return command;
+    }
+
+    /// <summary>
+    /// Writing the robot file's values includes its baud: refused when the bus runs at another one, since the modules
+    /// would go silent in the middle of the writes (a baud change is its own procedure, <see cref="BaudChange"/>).
+    /// </summary>
+    private static void RequireFileBaud(Host.Session.RobotConnection session)
+    {
+        var fileBaud = session.Definition!.Modules.BaudRate;
+        var lineBaud = session.Client.Link.BaudRate;
+        if (fileBaud != lineBaud)
+        {
+            throw new ArgumentException($"--from-robot-file: the robot file says modules.baud = {fileBaud} but the bus runs at {lineBaud} baud, and writing it would cut the modules off halfway; change the bus first (params set --field baud_rate --value {ModuleParameters.BaudCode(fileBaud)} --yes) or fix the file; nothing was written");
+        }
     }
 }

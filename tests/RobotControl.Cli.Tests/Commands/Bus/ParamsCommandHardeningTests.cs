@@ -15,8 +15,9 @@ public sealed class ParamsCommandHardeningTests
     [InlineData("position_min", 1, "999999999", "must be below position_max")]
     [InlineData("pot_cal_count", 0, "1", "must be 0 (no pot homing) or 2..8")]
     [InlineData("pot_cal_raw3", 0, "0", "strictly increasing or strictly decreasing")]
-    [InlineData("baud_rate", 0, "0", "below the 1 Mbaud")]
-    [InlineData("baud_rate", 0, "4", "add --yes")]
+    [InlineData("baud_rate", 0, "8", "outside its range 0..7")]
+    [InlineData("baud_rate", 0, "4", "leave --module out")]
+    [InlineData("id", 0, "9", "add --yes to confirm")]
     public void A_value_outside_the_control_table_or_its_rules_is_refused_and_not_stored(string field, int motor, string value, string expected)
     {
         using var bus = new PtyBus();

@@ -50,15 +50,44 @@ internal sealed class PtyBus : IDisposable
         return Cli.Run([.. words, Transport, "--robot", RobotFile, .. margin, .. args]);
     }
 
-    /// <summary>The value module <paramref name="id"/> holds in <paramref name="field"/>[<paramref name="motor"/>], read from its control table.</summary>
-    public long Read(byte id, string field, int motor)
+    /// <summary>Runs robotctl <paramref name="command"/> on this bus opened at <paramref name="baud"/> (as <see cref="Run"/> does).</summary>
+    public (int Code, string Output, string Error) RunAt(int baud, string command, params string[] args)
+    {
+        var words = command.Split(' ');
+        string[] margin = args.Contains("--margin-ms") ? [] : ["--margin-ms", "100"];
+        return Cli.Run([.. words, $"{Transport}?baud={baud}", "--robot", RobotFile, .. margin, .. args]);
+    }
+
+    /// <summary>The value module <paramref name="id"/> holds in <paramref name="field"/>[<paramref name="motor"/>], read from its control table (at <paramref name="baud"/>).</summary>
+    public long Read(byte id, string field, int motor, int baud = 1_000_000)
     {
         var f = ControlTable.Firmware[field];
-        using var client = new BusClient(SerialLink.Open(SlavePath, 1_000_000), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(100) });
+        using var client = Client(baud);
         var bytes = new byte[f.Size];
         var reply = client.Read(id, f.At(motor), bytes);
         return reply.Succeeded ? f.Decode(bytes) : throw new IOException($"module {id}: reading {field}[{motor}] failed ({reply.Outcome})");
     }
+
+    /// <summary>Writes <paramref name="value"/> into module <paramref name="id"/>'s module-wide <paramref name="field"/> at <paramref name="baud"/> (acknowledged).</summary>
+    public void Write(byte id, string field, long value, int baud = 1_000_000)
+    {
+        var f = ControlTable.Firmware[field];
+        using var client = Client(baud);
+        var bytes = new byte[f.Size];
+        f.Encode(value, bytes);
+        var reply = client.Write(id, f.At(0), bytes);
+        Assert.True(reply.Succeeded, $"module {id}: writing {field} = {value} at {baud} baud: {reply}");
+    }
+
+    /// <summary>Whether module <paramref name="id"/> answers a ping at <paramref name="baud"/>.</summary>
+    public bool Answers(byte id, int baud)
+    {
+        using var client = Client(baud);
+        return client.Ping(id, out _).Succeeded;
+    }
+
+    private BusClient Client(int baud) =>
+        new(SerialLink.Open(SlavePath, baud), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(100) });
 
     public void Dispose()
     {
