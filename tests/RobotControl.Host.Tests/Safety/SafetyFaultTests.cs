@@ -23,7 +23,9 @@ public sealed class SafetyFaultTests
         // 10 ms after the module's last answer, checked once per bus cycle; that answer may come a cycle or two before
         // the fault's time (8.8 ms measured from it)
         Assert.InRange(trip.TimeSeconds - FaultAtS, 0.005, 0.020);
-        Assert.InRange(trip.Measured, 10, 12);
+        // measured when the cycle after the limit ends: a cycle with a silent module includes its timeouts, retries and
+        // the one margin waited out after a timeout (late replies), 12.6 ms measured
+        Assert.InRange(trip.Measured, 10, 14);
         Assert.Equal(SafeState.TorqueOff, trip.Action);
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
         AssertCommon(run, "module_silent");
