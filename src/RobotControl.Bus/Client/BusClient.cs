@@ -88,6 +88,23 @@ public sealed partial class BusClient : IDisposable
     /// <summary>Counters of one module.</summary>
     public ModuleStatistics Statistics(byte id) => _stats[id];
 
+    /// <summary>The counters of the modules <paramref name="ids"/>, summed.</summary>
+    public BusTotals Totals(IEnumerable<byte> ids)
+    {
+        ArgumentNullException.ThrowIfNull(ids);
+        long frames = 0, crc = 0, timeouts = 0, retries = 0;
+        foreach (var id in ids)
+        {
+            var s = _stats[id];
+            frames += s.FramesSent + s.FramesReceived;
+            crc += s.CrcErrors;
+            timeouts += s.Timeouts;
+            retries += s.Retries;
+        }
+
+        return new BusTotals(frames, crc, timeouts, retries);
+    }
+
     /// <summary>Pings one module.</summary>
     public Reply Ping(byte id, out PingInfo info)
     {

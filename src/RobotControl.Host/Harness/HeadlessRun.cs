@@ -225,16 +225,7 @@ public static class HeadlessRun
             all.Add(new FaultEntry(elapsed.TotalSeconds, RobotNode.InstanceName, $"{node.RejectedSetpoints} non-finite setpoint vectors refused"));
         }
 
-        long frames = 0, crc = 0, timeouts = 0, retries = 0;
-        foreach (var controller in bus.Controllers)
-        {
-            var s = bus.Client.Statistics(controller.Id);
-            frames += s.FramesSent + s.FramesReceived;
-            crc += s.CrcErrors;
-            timeouts += s.Timeouts;
-            retries += s.Retries;
-        }
-
+        var totals = bus.Client.Totals(bus.Controllers.Select(c => c.Id));
         var stats = loop.Statistics;
         return new RunReport(
             elapsed.TotalSeconds,
@@ -245,7 +236,7 @@ public static class HeadlessRun
             stats.MaxUs,
             meter.RmsMm,
             meter.MaxMm,
-            new BusReport(frames, crc, timeouts, retries, bus.Client.LateReplies),
+            new BusReport(totals.Frames, totals.CrcErrors, totals.Timeouts, totals.Retries, bus.Client.LateReplies),
             all,
             SafetyReport.Of(session.Supervisor));
     }

@@ -192,6 +192,33 @@ public sealed class SafetySupervisor
         _levels.MoveTo(RunLevel.PedalUp, source, reason);
     }
 
+    /// <summary>
+    /// PEDAL_UP or PEDAL_DOWN -> INIT: an operator turns the motors off without an emergency (e.g. to write persistent
+    /// parameters or rediscover the bus); <see cref="Home"/> turns them on again. At E_STOP or INIT the motors are
+    /// turned off and the run level stays.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">Homing runs.</exception>
+    public void MotorsOff(string source)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(source);
+        if (Level == RunLevel.Homing)
+        {
+            throw new InvalidOperationException($"motors off ({source}): homing runs, wait for it to end");
+        }
+
+        PedalUp(source, "pedal up: the motors go off");
+        _robot.HoldAtMeasured();
+        if (_robot.State is RobotState.Enabled or RobotState.Fault)
+        {
+            _robot.EnableTorque(false);
+        }
+
+        if (Level == RunLevel.PedalUp)
+        {
+            _levels.MoveTo(RunLevel.Init, source, "motors off: they go on again through homing (re-homed if positions are in doubt)");
+        }
+    }
+
     /// <summary>An operator's emergency stop (console, CLI or pedal): the operator check's safe state, then E-STOP.</summary>
     public void EmergencyStop(string source, string reason)
     {

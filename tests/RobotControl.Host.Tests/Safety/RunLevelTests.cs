@@ -61,6 +61,43 @@ public sealed class RunLevelTests
     }
 
     [Fact]
+    public void Motors_off_goes_to_init_and_homing_turns_them_on_again_without_rehoming()
+    {
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        var supervisor = session.Supervisor;
+        supervisor.PedalDown("pedal");
+        session.RunVirtual(100);
+        supervisor.MotorsOff("console");
+        Assert.Equal(RunLevel.Init, supervisor.Level);
+        Assert.NotEqual(RobotState.Enabled, session.Robot.State);
+        Assert.Throws<InvalidOperationException>(() => supervisor.PedalDown("pedal"));
+        session.RunVirtual(200);
+
+        // With the motors off, long bus work between cycles (a rediscovery, 30 ms of parameter reads) trips nothing.
+        session.Robot.Discover();
+        var busClock = session.Connection.VirtualClock!;
+        var before = busClock.GetTimestamp();
+        while (busClock.GetElapsedTime(before) < TimeSpan.FromMilliseconds(30))
+        {
+            session.Robot.ReadParameter(session.Robot.Controllers[0].Id, "kp", 0);
+        }
+
+        session.RunVirtual(400);
+        Assert.Empty(supervisor.Trips);
+
+        busClock.Advance(TimeSpan.FromMilliseconds(30)); // the cycle after power-up comes late: not a stall of a powered robot
+        Assert.Empty(supervisor.Home("console")); // nothing in doubt: motors on without homing
+        Assert.Equal(RunLevel.PedalUp, supervisor.Level);
+        Assert.Equal(RobotState.Enabled, session.Robot.State);
+        session.RunVirtual(600);
+        Assert.Empty(supervisor.Trips);
+        Assert.Equal(RunLevel.PedalUp, supervisor.Level);
+        Assert.Equal(
+            [(RunLevel.PedalDown, RunLevel.PedalUp), (RunLevel.PedalUp, RunLevel.Init), (RunLevel.Init, RunLevel.Homing), (RunLevel.Homing, RunLevel.PedalUp)],
+            supervisor.History.Skip(3).Select(h => (h.From, h.To)).ToList());
+    }
+
+    [Fact]
     public void The_declared_table_refuses_moves_it_does_not_list()
     {
         var machine = new RunLevelMachine(TimeProvider.System);

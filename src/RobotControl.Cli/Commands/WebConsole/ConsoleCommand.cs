@@ -1,0 +1,155 @@
+using System.CommandLine;
+using System.Diagnostics;
+using RobotControl.Cli.Commands.Run;
+using RobotControl.Cli.Options;
+using RobotControl.Host.Session;
+using RobotControl.Runtime.Graph;
+using RobotControl.WebConsole.Adapter;
+using RobotControl.WebConsole.Server;
+
+namespace RobotControl.Cli.Commands.WebConsole;
+
+/// <summary>
+/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open]</c>:
+/// starts the session and serves the web console (pages and JSON/WebSocket API) from this process until Ctrl+C.
+/// </summary>
+internal sealed class ConsoleCommand : ICliCommand
+{
+    /// <inheritdoc />
+    public Command Build()
+    {
+        var graph = new Argument<FileInfo>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json" };
+        var isVirtual = new Option<bool>("--virtual") { Description = "Run the virtual robot (real firmware, simulated motors) in real time" };
+        var transport = new Option<string?>("--transport") { Description = "Bus transport instead of the graph's: serial:/dev/ttyUSB0?baud=1000000 | usb:0403:6001 | tcp:host:port" };
+        var bind = new Option<string>("--bind") { Description = "Address and port to serve on; anything but loopback needs a token", DefaultValueFactory = _ => "127.0.0.1:5080" };
+        var token = new Option<string?>("--token") { Description = "Access token (generated and printed when a non-loopback bind has none)" };
+        var open = new Option<bool>("--open") { Description = "Open the console in a browser window (Chromium's --app mode) when one is installed" };
+        var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder" };
+        var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
+        var command = new Command("console", "Web console: bus and controllers, plots, 3D view and run status of a running session.");
+        command.Arguments.Add(graph);
+        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed })
+        {
+            command.Options.Add(o);
+        }
+
+        command.SetAction(parse => Run(
+            parse.GetValue(graph)!.FullName,
+            parse.GetValue(isVirtual),
+            parse.GetValue(transport),
+            parse.GetValue(bind)!,
+            parse.GetValue(token),
+            parse.GetValue(open),
+            parse.GetValue(plugins)?.FullName,
+            parse.GetValue(seed),
+            parse.InvocationConfiguration.Output,
+            parse.InvocationConfiguration.Error));
+        return command;
+    }
+
+    private static int Run(string graphPath, bool isVirtual, string? transport, string bindText, string? token, bool open, string? pluginsFolder, int seed, TextWriter output, TextWriter error)
+    {
+        if (isVirtual && transport is not null)
+        {
+            error.WriteLine("give --virtual or --transport, not both");
+            return 2;
+        }
+
+        BindAddress bind;
+        try
+        {
+            bind = BindAddress.Parse(bindText);
+        }
+        catch (FormatException ex)
+        {
+            error.WriteLine(ex.Message);
+            return 2;
+        }
+
+        HeadlessSession session;
+        try
+        {
+            if (transport is not null)
+            {
+                TransportOverride.Check(transport);
+            }
+
+            session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed });
+        }
+        catch (GraphException ex)
+        {
+            error.WriteLine(ex.Message);
+            return 2;
+        }
+        catch (Exception ex) when (ex is InvalidOperationException or FormatException or IOException or ArgumentException)
+        {
+            error.WriteLine($"console: {ex.Message}");
+            return 2;
+        }
+
+        using (session)
+        {
+            ConsoleServer server;
+            try
+            {
+                server = ConsoleServer.StartAsync(session, bind, token).GetAwaiter().GetResult();
+            }
+            catch (Exception ex) when (ex is IOException or FormatException)
+            {
+                error.WriteLine($"console: cannot serve on {bind}: {ex.Message}");
+                return 2;
+            }
+
+            var status = session.Status;
+            output.WriteLine($"console: {status.Robot} on {status.Transport}, {status.ModulesFound} of {status.ModulesConfigured} modules found, loop {status.LoopRateHz:0} Hz");
+            output.WriteLine($"console: {server.OpenUrl}");
+            if (server.Token is not null && token is null)
+            {
+                output.WriteLine($"console: access token {server.Token} (generated: the bind is not loopback)");
+            }
+
+            if (open)
+            {
+                output.WriteLine(OpenBrowser(server.OpenUrl));
+            }
+
+            output.WriteLine("console: Ctrl+C stops");
+            using var stopped = new ManualResetEventSlim();
+            ConsoleCancelEventHandler cancel = (_, e) =>
+            {
+                e.Cancel = true;
+                stopped.Set();
+            };
+            System.Console.CancelKeyPress += cancel;
+            try
+            {
+                stopped.Wait();
+            }
+            finally
+            {
+                System.Console.CancelKeyPress -= cancel;
+                server.DisposeAsync().AsTask().GetAwaiter().GetResult();
+            }
+        }
+
+        return 0;
+    }
+
+    /// <summary>Starts a Chromium-family browser in app mode on <paramref name="url"/>; says what happened.</summary>
+    private static string OpenBrowser(Uri url)
+    {
+        foreach (var name in new[] { "chromium", "chromium-browser", "google-chrome", "microsoft-edge" })
+        {
+            var path = (Environment.GetEnvironmentVariable("PATH") ?? string.Empty).Split(':').Select(d => Path.Combine(d, name)).FirstOrDefault(File.Exists);
+            if (path is null)
+            {
+                continue;
+            }
+
+            using var process = Process.Start(new ProcessStartInfo(path) { ArgumentList = { $"--app={url}", "--no-first-run" }, UseShellExecute = false });
+            return $"console: opened {name} in app mode";
+        }
+
+        return "console: --open: no Chromium-family browser found (chromium, chromium-browser, google-chrome); open the URL above";
+    }
+}

@@ -1,0 +1,25 @@
+using RobotControl.Runtime.Discovery;
+
+namespace RobotControl.WebConsole.Adapter;
+
+/// <summary>How the console brings its session up.</summary>
+public sealed record HeadlessSessionOptions
+{
+    /// <summary>The graph file.</summary>
+    public required string GraphPath { get; init; }
+
+    /// <summary>Plug-in types the graph may use.</summary>
+    public required PluginCatalog Catalog { get; init; }
+
+    /// <summary>True: the virtual robot (real firmware, simulated motors), paced to real time.</summary>
+    public bool Virtual { get; init; }
+
+    /// <summary>A transport that replaces the graph's (serial, usb, tcp); null: the graph's.</summary>
+    public string? Transport { get; init; }
+
+    /// <summary>Seed of the virtual robot's random sources.</summary>
+    public int Seed { get; init; } = 1;
+
+    /// <summary>Rows of signal history kept for streaming.</summary>
+    public int RingCapacity { get; init; } = 16384;
+}

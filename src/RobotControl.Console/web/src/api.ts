@@ -1,0 +1,67 @@
+// The console's JSON API (docs/console.md). Every request names this page with X-Console-Client, so the server
+// can tell the operator's console from the watchers'.
+const clientKey = 'rc-console-client';
+export const clientId: string = sessionStorage.getItem(clientKey) ?? (() => {
+  const id = crypto.randomUUID();
+  sessionStorage.setItem(clientKey, id);
+  return id;
+})();
+
+export class ApiError extends Error {
+  constructor(readonly status: number, message: string, readonly details: string[] = []) {
+    super(message);
+  }
+}
+
+export async function api<T>(method: string, path: string, body?: unknown): Promise<T> {
+  const response = await fetch(`/api${path}`, {
+    method,
+    headers: { 'X-Console-Client': clientId, ...(body === undefined ? {} : { 'Content-Type': 'application/json' }) },
+    body: body === undefined ? undefined : JSON.stringify(body),
+  });
+  const text = await response.text();
+  const data = text.length > 0 ? JSON.parse(text) : {};
+  if (!response.ok) {
+    throw new ApiError(response.status, data.error ?? `${response.status} ${response.statusText}`, data.details ?? []);
+  }
+  return data as T;
+}
+
+export function show(message: string, error = false): void {
+  const box = document.getElementById('message')!;
+  box.textContent = message;
+  box.className = error ? 'error' : 'ok';
+}
+
+/** Runs an action, showing its result line (or the server's error) in the message bar. */
+export async function act(run: () => Promise<{ message: string; details?: string[] }>): Promise<boolean> {
+  try {
+    const result = await run();
+    show([result.message, ...(result.details ?? [])].join('\n'));
+    return true;
+  } catch (e) {
+    const err = e as ApiError;
+    show([err.message, ...(err.details ?? [])].join('\n'), true);
+    return false;
+  }
+}
+
+export interface ParameterSpec { key: string; label: string; unit: string; value: number | string; fileValue: number; min: number; max: number }
+export interface MotorView {
+  name: string; joint: string; channel: number; positionDeg: number; minDeg: number; maxDeg: number; currentA: number; pwm: number;
+  manual: boolean; torqueOn: boolean; errors: string[]; parameters: ParameterSpec[];
+}
+export interface ControllerView {
+  id: number; name: string; present: boolean; model: number; firmware: number; resetCause: string; resets: number; watchdog: string;
+  hardwareErrors: string[]; motors: MotorView[];
+}
+export interface SessionStatus {
+  robot: string; graph: string; transport: string; modulesConfigured: number; modulesFound: number; loopRateHz: number; ticks: number;
+  deadlineMisses: number; tickMedianUs: number; tickP99Us: number; tickMaxUs: number; tickAllocatedBytes: number | null; sessionSeconds: number; robotState: string;
+  robotLayer: string; session: string;
+  torqueOn: boolean; faults: string[]; pluginFaults: number;
+  bus: { cycles: number; frames: number; crcErrors: number; timeouts: number; retries: number };
+}
+export interface StatusReply { status: SessionStatus; operator: { held: boolean; you: boolean } }
+export interface ArmView { name: string; joints: string[]; positionSignals: string[]; commandSignals: string[] }
+export interface RobotModel { urdf: string; arms: ArmView[] }

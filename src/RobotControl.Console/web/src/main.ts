@@ -1,0 +1,54 @@
+import './style.css';
+import { api, act, show, type StatusReply } from './api';
+import { busPage } from './pages/bus';
+
+/** A page: renders into its element, and stops its timers and sockets when left. */
+export type Page = (root: HTMLElement) => () => void;
+
+// The bus page ships in the main chunk; the others load on first visit (three.js and uPlot are most of the bundle).
+const pages: Record<string, () => Promise<Page>> = {
+  bus: () => Promise.resolve(busPage),
+  plots: async () => (await import('./pages/plots')).plotsPage,
+  view3d: async () => (await import('./pages/view3d')).view3dPage,
+  status: async () => (await import('./pages/status')).statusPage,
+};
+let leave: (() => void) | null = null;
+let visit = 0;
+
+async function route(): Promise<void> {
+  const name = location.hash.replace('#', '') || 'bus';
+  const load = pages[name] ?? pages.bus;
+  const current = ++visit;
+  leave?.();
+  leave = null;
+  const root = document.getElementById('page')!;
+  root.replaceChildren();
+  root.dataset.page = name;
+  document.querySelectorAll<HTMLAnchorElement>('nav a').forEach((a) => a.classList.toggle('active', a.dataset.page === name));
+  const page = await load();
+  if (current === visit) leave = page(root);
+}
+
+async function heartbeat(): Promise<void> {
+  try {
+    const reply = await api<StatusReply>('GET', '/status');
+    document.getElementById('robot')!.textContent = `${reply.status.robot} · ${reply.status.transport}`;
+    const role = document.getElementById('role')!;
+    role.textContent = reply.operator.you ? 'operator' : reply.operator.held ? 'watching (another console operates)' : 'watching';
+    role.dataset.role = reply.operator.you ? 'operator' : 'watcher';
+    document.getElementById('claim')!.hidden = reply.operator.you;
+  } catch (e) {
+    show((e as Error).message, true);
+  }
+}
+
+document.getElementById('claim')!.addEventListener('click', () =>
+  act(async () => {
+    await api('POST', '/operator');
+    await heartbeat();
+    return { message: 'this console is the operator' };
+  }));
+window.addEventListener('hashchange', () => void route());
+void route();
+void heartbeat();
+setInterval(() => void heartbeat(), 1000);

@@ -1,0 +1,128 @@
+import { api, act, type ControllerView, type MotorView, type ParameterSpec, type StatusReply } from '../api';
+import { el, button, fmt } from '../dom';
+
+// Bus and controllers: discover; per controller its ID, friendly name, model, firmware, status and alerts; per motor
+// its live position/current/PWM, parameters (validated, written to FRAM after confirmation), jog, setpoint, home, torque.
+export function busPage(root: HTMLElement): () => void {
+  const toolbar = el('div', { class: 'toolbar' },
+    button('Discover', () => void act(() => api('POST', '/discover')).then(refresh), { 'data-testid': 'discover' }),
+    button('Torque on', () => void act(() => api('POST', '/torque', { on: true })), { 'data-testid': 'torque-on' }),
+    button('Torque off', () => void act(() => api('POST', '/torque', { on: false })), { 'data-testid': 'torque-off' }),
+    button('Pedal down', () => void act(() => api('POST', '/pedal', { down: true })), { 'data-testid': 'pedal-down' }),
+    button('Pedal up', () => void act(() => api('POST', '/pedal', { down: false })), { 'data-testid': 'pedal-up' }),
+    button('Home all', () => void act(() => api('POST', '/home')), { 'data-testid': 'home-all' }),
+    button('Clear faults', () => void act(() => api('POST', '/faults/clear')), { 'data-testid': 'clear-faults' }),
+    button('E-STOP', () => void act(() => api('POST', '/estop')), { 'data-testid': 'estop', class: 'estop' }),
+    el('span', { class: 'level', 'data-testid': 'run-level' }));
+  const list = el('div', { class: 'controllers', 'data-testid': 'controllers' });
+  root.append(toolbar, list);
+  let shape = '';
+
+  async function refresh(): Promise<void> {
+    const { status } = await api<StatusReply>('GET', '/status');
+    const level = toolbar.querySelector('[data-testid=run-level]')!;
+    const text = `run level ${status.robotState} · motors ${status.torqueOn ? 'on' : 'off'}`;
+    if (level.textContent !== text) level.textContent = text;
+    const controllers = await api<ControllerView[]>('GET', '/controllers');
+    const key = controllers.map((c) => `${c.id}:${c.motors.map((m) => m.name).join(',')}`).join('|');
+    if (key !== shape) {
+      shape = key;
+      list.replaceChildren(...controllers.map(controllerCard));
+    }
+    for (const c of controllers) {
+      update(c);
+    }
+  }
+
+  const timer = setInterval(() => void refresh().catch(() => undefined), 300);
+  void refresh();
+  return () => clearInterval(timer);
+}
+
+function controllerCard(c: ControllerView): HTMLElement {
+  const name = el('input', { value: c.name, 'aria-label': `name of module ${c.id}`, size: '18' });
+  const card = el('section', { class: 'controller', 'data-controller': String(c.id) },
+    el('h3', {}, `Module ${c.id} `, name,
+      button('Rename', () => void act(() => api('PUT', `/controllers/${c.id}/name`, { name: name.value })))),
+    el('div', { class: 'facts' },
+      el('span', { 'data-field': 'present' }), el('span', {}, `model ${c.model}`), el('span', {}, `firmware ${c.firmware}`),
+      el('span', { 'data-field': 'reset' }), el('span', { 'data-field': 'watchdog' }), el('span', { 'data-field': 'alerts' }),
+      button('Re-read parameters', () => void act(() => api('POST', `/controllers/${c.id}/reload`))),
+      button('Reboot module', () => {
+        if (confirm(`Reboot module ${c.id}? It resumes from FRAM.`)) void act(() => api('POST', `/controllers/${c.id}/reboot`));
+      }, { 'data-testid': `reboot-${c.id}` })),
+    el('table', { class: 'motors' },
+      el('thead', {}, el('tr', {}, ...['motor', 'position °', 'current A', 'PWM', 'torque', 'errors', 'parameters', 'jog', 'setpoint', ''].map((h) => el('th', {}, h)))),
+      el('tbody', {}, ...c.motors.map(motorRow))));
+  return card;
+}
+
+function motorRow(m: MotorView): HTMLElement {
+  const speed = el('input', { type: 'number', value: '10', step: '1', min: '0', 'aria-label': `jog speed of ${m.name}`, class: 'narrow' });
+  const jog = (sign: number) => act(() => api('POST', `/motors/${m.name}/jog`, { degPerS: sign * Number(speed.value) }));
+  const target = el('input', { type: 'number', step: '0.1', min: String(m.minDeg), max: String(m.maxDeg), 'aria-label': `setpoint of ${m.name}`, class: 'narrow' });
+  return el('tr', { 'data-motor': m.name },
+    el('td', {}, el('strong', {}, m.name), el('br'), el('small', {}, `ch ${m.channel}`)),
+    el('td', { 'data-field': 'position', 'data-testid': `position-${m.name}` }),
+    el('td', { 'data-field': 'current' }),
+    el('td', { 'data-field': 'pwm' }),
+    el('td', { 'data-field': 'torque' }),
+    el('td', { 'data-field': 'errors' }),
+    el('td', {}, el('div', { class: 'params' }, ...m.parameters.map((p) => parameterEditor(m, p)))),
+    el('td', { class: 'jog' },
+      button('−', () => void jog(-1), { 'data-testid': `jog-minus-${m.name}` }),
+      button('stop', () => void jog(0), { 'data-testid': `jog-stop-${m.name}` }),
+      button('+', () => void jog(1), { 'data-testid': `jog-plus-${m.name}` }),
+      speed, el('small', {}, '°/s')),
+    el('td', {}, target,
+      button('Go', () => void act(() => api('POST', `/motors/${m.name}/setpoint`, { deg: Number(target.value) })))),
+    el('td', {},
+      button('Home', () => void act(() => api('POST', `/motors/${m.name}/home`))),
+      button('Release', () => void act(() => api('POST', `/motors/${m.name}/release`)))));
+}
+
+function parameterEditor(m: MotorView, p: ParameterSpec): HTMLElement {
+  const input = el('input', { type: 'number', step: 'any', min: String(p.min), max: String(p.max), 'data-param': p.key, 'aria-label': `${p.label} of ${m.name}`, class: 'narrow' });
+  input.value = fmt(p.value, 3);
+  const write = button('Write', () => {
+    const value = Number(input.value);
+    if (input.value.trim() === '' || !Number.isFinite(value) || value < p.min || value > p.max) {
+      input.setCustomValidity(`give ${fmt(p.min, 3)}..${fmt(p.max, 3)} ${p.unit}`);
+      input.reportValidity();
+      return;
+    }
+    input.setCustomValidity('');
+    if (confirm(`Write ${p.label} = ${value} ${p.unit} of ${m.name} into the module's FRAM?`)) {
+      void act(() => api('PUT', `/motors/${m.name}/parameters/${p.key}`, { value })).then((ok) => { if (ok) input.dataset.dirty = ''; });
+    }
+  }, { 'data-testid': `write-${p.key}-${m.name}` });
+  input.addEventListener('input', () => { input.dataset.dirty = '1'; });
+  return el('label', { title: `robot file: ${fmt(p.fileValue, 3)} ${p.unit}` }, `${p.label} `, input, ` ${p.unit} `, write);
+}
+
+function update(c: ControllerView): void {
+  const card = document.querySelector<HTMLElement>(`[data-controller="${c.id}"]`);
+  if (!card) return;
+  const set = (scope: Element, field: string, text: string) => {
+    const e = scope.querySelector(`[data-field="${field}"]`);
+    if (e && e.textContent !== text) e.textContent = text;
+  };
+  card.classList.toggle('missing', !c.present);
+  set(card, 'present', c.present ? 'present' : 'MISSING');
+  set(card, 'reset', `last reset: ${c.resetCause} (${c.resets} this session)`);
+  set(card, 'watchdog', `watchdog ${c.watchdog}`);
+  set(card, 'alerts', c.hardwareErrors.length ? `alerts: ${c.hardwareErrors.join(', ')}` : 'no alerts');
+  for (const m of c.motors) {
+    const row = card.querySelector(`[data-motor="${m.name}"]`);
+    if (!row) continue;
+    set(row, 'position', fmt(m.positionDeg, 2));
+    set(row, 'current', fmt(m.currentA, 3));
+    set(row, 'pwm', String(m.pwm));
+    set(row, 'torque', `${m.torqueOn ? 'on' : 'off'}${m.manual ? ' · manual' : ''}`);
+    set(row, 'errors', m.errors.join(', ') || '—');
+    for (const p of m.parameters) {
+      const input = row.querySelector<HTMLInputElement>(`input[data-param="${p.key}"]`);
+      if (input && !input.dataset.dirty && document.activeElement !== input) input.value = fmt(p.value, 3);
+    }
+  }
+}

@@ -1,0 +1,43 @@
+import { api, type StatusReply } from '../api';
+import { el, fmt } from '../dom';
+
+interface EventEntry { sequence: number; timeSeconds: number; source: string; message: string }
+interface Timing { component: string; count: number; medianUs: number; p99Us: number; maxUs: number }
+
+// Run status: loop rate, tick time, deadline misses, bus counters, the fault and event log, per-component timing.
+export function statusPage(root: HTMLElement): () => void {
+  const summary = el('table', { class: 'kv', 'data-testid': 'run-status' });
+  const timings = el('table', { class: 'timings' });
+  const log = el('table', { class: 'log', 'data-testid': 'event-log' });
+  root.append(el('div', { class: 'status' },
+    el('section', {}, el('h3', {}, 'Session'), summary),
+    el('section', {}, el('h3', {}, 'Timing per component'), timings)),
+  el('section', {}, el('h3', {}, 'Faults and events'), log));
+  let last = 0;
+
+  async function refresh(): Promise<void> {
+    const { status: s } = await api<StatusReply>('GET', '/status');
+    const rows: [string, string][] = [
+      ['robot', `${s.robot} (${s.graph})`], ['transport', s.transport], ['modules', `${s.modulesFound} of ${s.modulesConfigured} found`],
+      ['run level', s.robotState], ['robot layer', s.robotLayer], ['session', s.session], ['torque', s.torqueOn ? 'on' : 'off'], ['loop rate', `${s.loopRateHz} Hz`],
+      ['ticks', String(s.ticks)], ['session time', `${fmt(s.sessionSeconds, 1)} s`],
+      ['tick time', `median ${fmt(s.tickMedianUs, 1)} µs, p99 ${fmt(s.tickP99Us, 1)} µs, max ${fmt(s.tickMaxUs, 1)} µs`],
+      ['deadline misses', String(s.deadlineMisses)],
+      ['allocated in ticks', s.tickAllocatedBytes === null ? 'not counted (real bus)' : `${s.tickAllocatedBytes} B in ${s.ticks} ticks`], ['faults', s.faults.join(', ') || 'none'], ['plug-in faults', String(s.pluginFaults)],
+      ['bus', `${s.bus.cycles} cycles, ${s.bus.frames} frames, ${s.bus.crcErrors} CRC errors, ${s.bus.timeouts} timeouts, ${s.bus.retries} retries`],
+    ];
+    summary.replaceChildren(...rows.map(([k, v]) => el('tr', {}, el('th', {}, k), el('td', {}, v))));
+    const t = await api<Timing[]>('GET', '/timings');
+    timings.replaceChildren(el('tr', {}, ...['component', 'runs', 'median µs', 'p99 µs', 'max µs'].map((h) => el('th', {}, h))),
+      ...t.map((x) => el('tr', {}, el('td', {}, x.component), el('td', {}, String(x.count)), el('td', {}, fmt(x.medianUs, 1)), el('td', {}, fmt(x.p99Us, 1)), el('td', {}, fmt(x.maxUs, 1)))));
+    const events = await api<EventEntry[]>('GET', `/events?after=${last}`);
+    for (const e of events) {
+      last = Math.max(last, e.sequence);
+      log.prepend(el('tr', {}, el('td', {}, `${fmt(e.timeSeconds, 3)} s`), el('td', {}, e.source), el('td', {}, e.message)));
+    }
+  }
+
+  const timer = setInterval(() => void refresh().catch(() => undefined), 500);
+  void refresh();
+  return () => clearInterval(timer);
+}

@@ -1,0 +1,127 @@
+using System.Net.Http.Json;
+using Microsoft.Playwright;
+using RobotControl.Plugins.Standard.Conditioning;
+using RobotControl.Plugins.Touch;
+using RobotControl.Runtime.Discovery;
+using RobotControl.WebConsole.Adapter;
+using RobotControl.WebConsole.Server;
+
+namespace RobotControl.WebConsole.Tests;
+
+/// <summary>
+/// One console on the virtual robot (graphs/teleop-lb.json, real firmware, real time) shared by the tests of the
+/// collection, plus headless Chromium (Debian's, at /usr/bin/chromium; SwiftShader for WebGL).
+/// </summary>
+public sealed class ConsoleFixture : IAsyncLifetime
+{
+    public const string ChromiumPath = "/usr/bin/chromium";
+
+    private IPlaywright? _playwright;
+
+    public HeadlessSession Session { get; private set; } = null!;
+
+    public ConsoleServer Server { get; private set; } = null!;
+
+    public IBrowser Browser => _browser ?? throw new InvalidOperationException("no browser");
+
+    private IBrowser? _browser;
+
+    public static string RepoRoot
+    {
+        get
+        {
+            var dir = new DirectoryInfo(AppContext.BaseDirectory);
+            while (dir is not null && !File.Exists(Path.Combine(dir.FullName, "RobotControl.sln")))
+            {
+                dir = dir.Parent;
+            }
+
+            return dir?.FullName ?? throw new InvalidOperationException("repository root not found");
+        }
+    }
+
+    public static PluginCatalog Catalog() => PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
+
+    public async Task InitializeAsync()
+    {
+        Session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = Path.Combine(RepoRoot, "graphs", "teleop-lb.json"), Catalog = Catalog(), Virtual = true });
+        Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null);
+        _playwright = await Playwright.CreateAsync();
+        _browser = await _playwright.Chromium.LaunchAsync(new BrowserTypeLaunchOptions
+        {
+            ExecutablePath = ChromiumPath,
+            Headless = true,
+            Args =
+            [
+                "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
+            ],
+        });
+    }
+
+    public async Task DisposeAsync()
+    {
+        if (_browser is not null)
+        {
+            await _browser.DisposeAsync();
+        }
+
+        _playwright?.Dispose();
+        await Server.DisposeAsync();
+        Session.Dispose();
+    }
+
+    /// <summary>An HTTP client that names itself <paramref name="client"/>.</summary>
+    public HttpClient Client(string client)
+    {
+        var http = new HttpClient { BaseAddress = Server.BaseUrl };
+        http.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, client);
+        return http;
+    }
+
+    /// <summary>An HTTP client holding the operator role (taken from whoever held it).</summary>
+    public async Task<HttpClient> Operator(string client)
+    {
+        ReleaseOperator();
+        var http = Client(client);
+        (await http.PostAsync("api/operator", null)).EnsureSuccessStatusCode();
+        return http;
+    }
+
+    /// <summary>Frees the operator role (between tests).</summary>
+    public void ReleaseOperator()
+    {
+        if (Server.Operator.Holder is { } holder)
+        {
+            Server.Operator.Release(holder);
+        }
+    }
+
+    /// <summary>A motor's live view from the API.</summary>
+    public static async Task<System.Text.Json.JsonElement> Motor(HttpClient http, string name)
+    {
+        var controllers = await http.GetFromJsonAsync<System.Text.Json.JsonElement>("api/controllers");
+        foreach (var c in controllers.EnumerateArray())
+        {
+            foreach (var m in c.GetProperty("motors").EnumerateArray())
+            {
+                if (m.GetProperty("name").GetString() == name)
+                {
+                    return m;
+                }
+            }
+        }
+
+        throw new KeyNotFoundException(name);
+    }
+
+    /// <summary>The value of parameter <paramref name="key"/> of a motor as the module holds it.</summary>
+    public static double Parameter(System.Text.Json.JsonElement motor, string key) =>
+        motor.GetProperty("parameters").EnumerateArray().First(p => p.GetProperty("key").GetString() == key).GetProperty("value").GetDouble();
+}
+
+[CollectionDefinition(Name)]
+public sealed class ConsoleCollection : ICollectionFixture<ConsoleFixture>
+{
+    public const string Name = "console on the virtual robot";
+}

@@ -1,0 +1,77 @@
+using System.Net;
+using System.Net.Http.Json;
+using System.Text;
+
+namespace RobotControl.WebConsole.Tests.Server;
+
+[Collection(ConsoleCollection.Name)]
+public sealed class ApiTests(ConsoleFixture console)
+{
+    [Fact]
+    public async Task Status_names_the_robot_transport_modules_and_loop()
+    {
+        using var http = console.Client("status-reader");
+        var reply = await http.GetFromJsonAsync<System.Text.Json.JsonElement>("api/status");
+        var s = reply.GetProperty("status");
+        Assert.Equal("LB-1.0", s.GetProperty("robot").GetString());
+        Assert.StartsWith("virtual:", s.GetProperty("transport").GetString(), StringComparison.Ordinal);
+        Assert.Equal(6, s.GetProperty("modulesFound").GetInt32());
+        Assert.Equal(1000, s.GetProperty("loopRateHz").GetDouble());
+        Assert.True(s.GetProperty("ticks").GetInt64() > 0);
+        Assert.True(s.GetProperty("robotState").GetString() == "PEDAL_UP", $"run level {s.GetProperty("robotState")}, faults {s.GetProperty("faults")}"); // the safety supervisor's
+        Assert.Equal("Enabled", s.GetProperty("robotLayer").GetString());
+        Assert.Equal("running", s.GetProperty("session").GetString());
+    }
+
+    [Fact]
+    public async Task A_watching_client_cannot_jog()
+    {
+        using var operatorClient = await console.Operator("operator-a");
+        using var watcher = console.Client("watcher-b");
+        var response = await watcher.PostAsJsonAsync("api/motors/right.elbow/jog", new { degPerS = 5 });
+        Assert.Equal(HttpStatusCode.Forbidden, response.StatusCode);
+        Assert.Contains("another console holds the operator role", await response.Content.ReadAsStringAsync(), StringComparison.Ordinal);
+        Assert.Equal(HttpStatusCode.Conflict, (await watcher.PostAsync("api/operator", null)).StatusCode);
+        Assert.False((await ConsoleFixture.Motor(watcher, "right.elbow")).GetProperty("manual").GetBoolean());
+        console.ReleaseOperator();
+    }
+
+    [Fact]
+    public async Task Bad_input_gets_4xx_with_a_message_and_nothing_applied()
+    {
+        using var http = await console.Operator("operator-bad-input");
+        var before = await ConsoleFixture.Motor(http, "right.elbow");
+        var kp = ConsoleFixture.Parameter(before, "kp");
+        var limit = ConsoleFixture.Parameter(before, "current_limit");
+
+        async Task Expect(HttpStatusCode code, HttpResponseMessage response, string fragment)
+        {
+            Assert.Equal(code, response.StatusCode);
+            Assert.Contains(fragment, await response.Content.ReadAsStringAsync(), StringComparison.Ordinal);
+        }
+
+        await Expect(HttpStatusCode.NotFound, await http.PostAsJsonAsync("api/motors/right.nosuch/jog", new { degPerS = 5 }), "no motor 'right.nosuch'");
+        await Expect(HttpStatusCode.BadRequest, await http.PostAsJsonAsync("api/motors/right.elbow/setpoint", new { deg = 1000 }), "outside");
+        await Expect(HttpStatusCode.BadRequest, await http.PostAsJsonAsync("api/motors/right.elbow/jog", new { degPerS = 1e6 }), "speed limit");
+        await Expect(HttpStatusCode.BadRequest, await http.PutAsync("api/motors/right.elbow/parameters/kp", new StringContent("{\"value\": ", Encoding.UTF8, "application/json")), "malformed JSON");
+        await Expect(HttpStatusCode.BadRequest, await http.PutAsync("api/motors/right.elbow/parameters/kp", new StringContent("{\"valu\": 3}", Encoding.UTF8, "application/json")), "kp");
+        await Expect(HttpStatusCode.BadRequest, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/current_limit", new { value = 1e6 }), "outside what current_limit");
+        await Expect(HttpStatusCode.BadRequest, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/kp", new { value = -1 }), "outside what kp");
+        await Expect(HttpStatusCode.NotFound, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/nosuch", new { value = 1 }), "no parameter 'nosuch'");
+        await Expect(HttpStatusCode.NotFound, await http.PostAsync("api/controllers/99/reboot", null), "no controller 99");
+
+        var reload = await http.PostAsync($"api/controllers/{(await ControllerOf(http, "right.elbow"))}/reload", null);
+        reload.EnsureSuccessStatusCode();
+        var after = await ConsoleFixture.Motor(http, "right.elbow");
+        Assert.Equal(kp, ConsoleFixture.Parameter(after, "kp"));
+        Assert.Equal(limit, ConsoleFixture.Parameter(after, "current_limit"));
+        Assert.False(after.GetProperty("manual").GetBoolean());
+        console.ReleaseOperator();
+    }
+
+    private static async Task<int> ControllerOf(HttpClient http, string motor)
+    {
+        var controllers = await http.GetFromJsonAsync<System.Text.Json.JsonElement>("api/controllers");
+        return controllers.EnumerateArray().First(c => c.GetProperty("motors").EnumerateArray().Any(m => m.GetProperty("name").GetString() == motor)).GetProperty("id").GetInt32();
+    }
+}
