@@ -77,6 +77,23 @@ public sealed class HapticsEdgeTests
     }
 
     [Fact]
+    public void A_handle_moving_on_the_unlock_tick_does_not_move_the_pose()
+    {
+        // Locked at x = 10 while the handle drifts to 14; on the unlock tick the handle is at 20: the pose stays at 10
+        // (offset -10 taken on that tick), then follows: handle 21 gives 11.
+        var lockPlugin = new PluginDriver(new HapticLockPlugin(new HapticLockSettings(), PluginContext.Standalone("l")));
+        lockPlugin.Set(("x", 10)).Tick();
+        lockPlugin.Set(("lock", 1)).Tick();
+        lockPlugin.Set(("x", 14)).Tick(3);
+
+        lockPlugin.Set(("lock", 0), ("x", 20)).Tick();
+        Assert.Equal(10.0, lockPlugin["x"], 12);
+
+        lockPlugin.Set(("x", 21)).Tick();
+        Assert.Equal(11.0, lockPlugin["x"], 12);
+    }
+
+    [Fact]
     public void Walls_clamp_the_negative_side_and_invert_x_and_z_on_request()
     {
         var walls = new PluginDriver(new HapticWallsPlugin(new HapticWallsSettings { MaxForceN = 1.5, InvertForceX = true, InvertForceZ = true }, PluginContext.Standalone("w")));
