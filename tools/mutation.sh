@@ -25,6 +25,10 @@ targets=(
 what="${1:-all}"
 shift || true
 
+# The machine's cores are shared: Stryker runs at the lowest priority, two test sessions at a time by default.
+concurrency="${MUTATION_CONCURRENCY:-2}"
+status=0
+
 run_dotnet() {
   dotnet tool restore >/dev/null
   for t in "${targets[@]}"; do
@@ -39,10 +43,14 @@ run_dotnet() {
       echo "mutation: $name: no $project or no $tests; skipped"
       continue
     fi
-    echo "== Stryker.NET: RobotControl.$name (tests: $tests)"
-    (cd "$tests" && dotnet stryker --project "RobotControl.$name.csproj" --configuration Release --concurrency 2 \
+    # The scope (which files are mutated, and why) is in tools/mutation/NAME.json; without one, the whole project.
+    config=("--project" "RobotControl.$name.csproj" "--configuration" "Release")
+    [ -f "$root/tools/mutation/$name.json" ] && config=("--config-file" "$root/tools/mutation/$name.json")
+    echo "== Stryker.NET: RobotControl.$name (tests: $tests, concurrency $concurrency)"
+    rm -rf "$out/$name"
+    (cd "$tests" && nice -n 19 dotnet stryker "${config[@]}" --concurrency "$concurrency" \
       --reporter json --reporter html --reporter progress --output "$out/$name" >"$out/$name.log" 2>&1) || {
-      echo "mutation: $name: Stryker failed; see $out/$name.log"; continue; }
+      echo "mutation: $name: Stryker failed; see $out/$name.log"; status=1; continue; }
     python3 - "$out/$name/reports/mutation-report.json" "$name" <<'PY'
 import json, sys
 report = json.load(open(sys.argv[1]))
@@ -65,3 +73,4 @@ case "$what" in
   all) run_dotnet; python3 firmware/tools/mutate.py --json "$out/firmware.json" ;;
   *) echo "usage: bash tools/mutation.sh [all|dotnet [NAME...]|firmware]"; exit 2 ;;
 esac
+exit "$status"
