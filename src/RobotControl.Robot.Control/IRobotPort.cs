@@ -43,6 +43,14 @@ public interface IRobotPort
     /// supervisor always allows it.
     /// </summary>
     bool TeleopAllowed => true;
+
+    /// <summary>
+    /// Tells the port how old the input device data driving <paramref name="arm"/> is, ms (the master timeout: a
+    /// safety supervisor holds the arms when it is too old). A port without a supervisor ignores it.
+    /// </summary>
+    void ReportInputAge(int arm, double ageMs)
+    {
+    }
 }
 
 /// <summary>Robot-level fault flags, surfaced in the graph as an output.</summary>

@@ -13,7 +13,10 @@ namespace RobotControl.Host.Safety;
 /// <see cref="RunLevel.PedalDown"/> the robot holds (goals frozen at the measured positions: teleoperation is
 /// ignored); every goal is under the robot layer's step cap. A trip records what crossed which limit, puts the robot
 /// in the check's safe state (<see cref="SafetyLimits.SafeStateOf"/>) and moves to <see cref="RunLevel.EStop"/>;
-/// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again.
+/// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again. The master
+/// timeout (input device data older than its limit, <see cref="BusRobot.InputAgeMs"/>) is the one soft trip that,
+/// with its default safe state hold, goes back to <see cref="RunLevel.PedalUp"/> instead (as the Raven-II's
+/// master-data timeout forces pedal-up): the operator may press the pedal again once the data is fresh.
 /// </summary>
 public sealed class SafetySupervisor
 {
@@ -39,6 +42,7 @@ public sealed class SafetySupervisor
     private readonly long _potTicks;
     private readonly long _silentTicks;
     private readonly long _stallTicks;
+    private readonly int _arms;
     private long _lastCycle;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
@@ -73,6 +77,7 @@ public sealed class SafetySupervisor
         _potTicks = (long)(limits.PotMismatchMs * 1e-3 * f);
         _silentTicks = (long)(limits.ModuleSilentMs * 1e-3 * f);
         _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
+        _arms = robot.ArmCount;
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.AfterUpdate = CheckCycle;
@@ -168,12 +173,22 @@ public sealed class SafetySupervisor
     }
 
     /// <summary>PEDAL_UP -> PEDAL_DOWN: teleoperation drives the arms (from the measured positions, under the step cap).</summary>
-    /// <exception cref="InvalidOperationException">Not at PEDAL_UP.</exception>
+    /// <exception cref="InvalidOperationException">Not at PEDAL_UP, or an arm's input device data is older than the master timeout.</exception>
     public void PedalDown(string source)
     {
         if (!_levels.CanMoveTo(RunLevel.PedalDown))
         {
             throw new InvalidOperationException($"pedal down ({source}) needs the run level PEDAL_UP, it is {Level.Name()}");
+        }
+
+        if (StaleArm() is { } stale)
+        {
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the input data of the {_robot.Definition.Arms[stale.Arm].Name} arm is {stale.AgeMs:0.#} ms old (master_timeout_ms {Limits.MasterTimeoutMs:0.#})"));
+        }
+
+        lock (_tripGate)
+        {
+            _tripped[(int)SafetyCheck.MasterTimeout] = false; // a new episode of teleoperation: a new timeout is a new trip
         }
 
         _robot.ReleaseHold();
@@ -278,12 +293,57 @@ public sealed class SafetySupervisor
             Trip(SafetyCheck.NonFinite, "setpoint", double.NaN, 0, "rad", now);
         }
 
+        if (Level == RunLevel.PedalDown && StaleArm() is { } stale)
+        {
+            MasterTimeout(stale.Arm, stale.AgeMs, now);
+        }
+
         var driven = _robot.State == RobotState.Enabled;
         var homed = Level is RunLevel.PedalUp or RunLevel.PedalDown;
         for (var i = 0; i < _motors.Length; i++)
         {
             CheckMotor(i, driven, homed, now);
         }
+    }
+
+    /// <summary>The first arm whose input device data is older than the master timeout, with its age (ms), or null.</summary>
+    private (int Arm, double AgeMs)? StaleArm()
+    {
+        for (var a = 0; a < _arms; a++)
+        {
+            var age = _robot.InputAgeMs(a);
+            if (!(age <= Limits.MasterTimeoutMs))
+            {
+                return (a, age);
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>
+    /// The master timeout: with the safe state hold, the trip is recorded and the run level goes back to PEDAL_UP (the
+    /// arms hold, teleoperation is ignored); with torque off, it is a trip like any other (E_STOP).
+    /// </summary>
+    private void MasterTimeout(int arm, double age, long now)
+    {
+        var joint = _robot.Definition.Arms[arm].Name;
+        if (Limits.SafeStateOf(SafetyCheck.MasterTimeout) == SafeState.TorqueOff)
+        {
+            Trip(SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", now);
+            return;
+        }
+
+        lock (_tripGate)
+        {
+            if (!_tripped[(int)SafetyCheck.MasterTimeout])
+            {
+                _tripped[(int)SafetyCheck.MasterTimeout] = true;
+                _trips.Add(new SafetyTrip(now, SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", SafeState.Hold));
+            }
+        }
+
+        PedalUp(TripSource, string.Create(CultureInfo.InvariantCulture, $"master_timeout {joint}: input data {age:0.#} ms old (limit {Limits.MasterTimeoutMs:0.#}): hold"));
     }
 
     private void CheckModules(long now)

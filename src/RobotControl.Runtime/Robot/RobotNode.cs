@@ -10,7 +10,8 @@ namespace RobotControl.Runtime.Robot;
 /// (<c>right.elbow</c>, radians, in the arm's own right-arm model) and the jaw (<c>right.jaw</c>); outputs are the
 /// joint positions the modules report (<c>right.elbow.position</c>), motor currents (<c>right.elbow.current</c>, A)
 /// the robot's fault flags (<c>faults</c>) and <c>teleop_enabled</c> (1 while the run level lets teleoperation drive
-/// the arms: the haptic handles' <c>force_enable</c>). Talks to an <see cref="IRobotPort"/> without blocking or allocating.
+/// the arms: the haptic handles' <c>force_enable</c>). The input <c>right.input_age_ms</c> takes how old the input
+/// device data driving the arm is (a Touch's <c>sample_age_ms</c>) and hands it to the port (the master timeout). Talks to an <see cref="IRobotPort"/> without blocking or allocating.
 /// <para>
 /// Safety: when anything upstream has faulted the robot holds position (once, then stays held); a non-finite
 /// setpoint is never written (the arm holds and <see cref="RejectedSetpoints"/> counts it). Arms without a wired
@@ -25,6 +26,7 @@ public sealed class RobotNode : Plugin
     private readonly RobotDefinition _robot;
     private readonly InputPort[][] _setpoints;
     private readonly InputPort[] _jaws;
+    private readonly InputPort[] _inputAges;
     private readonly OutputPort[][] _positions;
     private readonly OutputPort[][] _currents;
     private readonly OutputPort _faults;
@@ -48,6 +50,7 @@ public sealed class RobotNode : Plugin
         var jointCount = robot.JointCount;
         _setpoints = new InputPort[arms][];
         _jaws = new InputPort[arms];
+        _inputAges = new InputPort[arms];
         _positions = new OutputPort[arms][];
         _currents = new OutputPort[arms][];
         _commanded = new double[arms][];
@@ -56,6 +59,7 @@ public sealed class RobotNode : Plugin
             var arm = robot.Arms[a].Name;
             _setpoints[a] = [.. robot.Joints.Select(j => DeclareInput($"{arm}.{j.Name}", "rad", $"{arm} arm {j.Name} setpoint"))];
             _jaws[a] = DeclareInput($"{arm}.jaw", "rad", $"{arm} arm jaw opening setpoint");
+            _inputAges[a] = DeclareInput($"{arm}.input_age_ms", "ms", $"how old the input device data driving the {arm} arm is (a Touch's sample_age_ms; unwired: 0, no master timeout)");
             _commanded[a] = new double[jointCount];
         }
 
@@ -136,6 +140,11 @@ public sealed class RobotNode : Plugin
             {
                 Write(_currents[a][m], _currentValues[m]);
             }
+        }
+
+        for (var a = 0; a < _inputAges.Length; a++)
+        {
+            port.ReportInputAge(a, Read(_inputAges[a]));
         }
 
         Write(_faults, (int)port.Faults);
