@@ -16,11 +16,15 @@ namespace RobotControl.Host.Safety;
 /// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again. The master
 /// timeout (input device data older than its limit, <see cref="BusRobot.InputAgeMs"/>) is the one soft trip that,
 /// with its default safe state hold, goes back to <see cref="RunLevel.PedalUp"/> instead (as the Raven-II's
-/// master-data timeout forces pedal-up): the operator may press the pedal again once the data is fresh.
+/// master-data timeout forces pedal-up): the operator may press the pedal again once the data is fresh. When the graph
+/// wires a pedal to the robot node (<see cref="BusRobot.Pedal"/>), PEDAL_UP and PEDAL_DOWN follow it (a press moves
+/// to PEDAL_DOWN only from PEDAL_UP, so after a timeout or a trip the operator lifts and presses again); an
+/// emergency-stop pedal or button (<see cref="BusRobot.EmergencyStopPedal"/>) trips E-STOP when pressed.
 /// </summary>
 public sealed class SafetySupervisor
 {
     private const string TripSource = "supervisor";
+    private const string PedalSource = "pedal";
     private readonly BusRobot _robot;
     private readonly TimeProvider _time;
     private readonly RunLevelMachine _levels;
@@ -46,6 +50,8 @@ public sealed class SafetySupervisor
     private long _lastCycle;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
+    private OperatorPedal _lastPedal;
+    private OperatorPedal _lastEmergencyStop;
 
     /// <summary>A supervisor of <paramref name="robot"/> (discovered) at <see cref="RunLevel.Init"/>; it checks every cycle from now on.</summary>
     /// <param name="robot">The robot layer (its clock is the supervisor's).</param>
@@ -266,6 +272,7 @@ public sealed class SafetySupervisor
     /// <summary>The per-cycle checks (the robot's <see cref="BusRobot.AfterUpdate"/>).</summary>
     private void CheckCycle()
     {
+        FollowOperator();
         if (Level == RunLevel.Init)
         {
             _lastCycle = 0;
@@ -304,6 +311,29 @@ public sealed class SafetySupervisor
         {
             CheckMotor(i, driven, homed, now);
         }
+    }
+
+    /// <summary>The operator's pedals as the graph reports them (nothing when the graph has none): edges move the run level.</summary>
+    private void FollowOperator()
+    {
+        var stop = _robot.EmergencyStopPedal;
+        if (stop == OperatorPedal.Down && _lastEmergencyStop != OperatorPedal.Down && Level != RunLevel.EStop)
+        {
+            EmergencyStop(PedalSource, "emergency-stop pedal pressed");
+        }
+
+        _lastEmergencyStop = stop;
+        var pedal = _robot.Pedal;
+        if (pedal == OperatorPedal.Down && _lastPedal == OperatorPedal.Up && Level == RunLevel.PedalUp && StaleArm() is null)
+        {
+            PedalDown(PedalSource);
+        }
+        else if (pedal == OperatorPedal.Up && Level == RunLevel.PedalDown)
+        {
+            PedalUp(PedalSource, "pedal up: holding position");
+        }
+
+        _lastPedal = pedal;
     }
 
     /// <summary>The first arm whose input device data is older than the master timeout, with its age (ms), or null.</summary>
