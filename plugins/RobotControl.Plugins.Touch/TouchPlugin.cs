@@ -9,6 +9,7 @@ namespace RobotControl.Plugins.Touch;
 /// A Geomagic Touch: outputs stylus position (mm), orientation (rad) and two buttons (0/1) in the device frame;
 /// inputs a 3-DOF force (N, device frame) to render, normally fed back one tick later from the haptics chain, and
 /// <c>force_enable</c>, the seam for the safety supervisor's run level (below 0.5: no force reaches the device).
+/// <c>sample_age_ms</c> says how old the reading is (the master timeout: wire it to the robot's <c>arm.input_age_ms</c>).
 /// The device itself is behind <see cref="ITouchBackend"/>, chosen by the <c>backend</c> setting.
 /// </summary>
 [PluginType("touch", Description = "Geomagic Touch haptic device (back ends: simulated scripted hand, or the real device through OpenHaptics).")]
@@ -26,6 +27,7 @@ public sealed class TouchPlugin : Plugin<TouchSettings>
     private readonly OutputPort _yaw;
     private readonly OutputPort _button1;
     private readonly OutputPort _button2;
+    private readonly OutputPort _sampleAge;
 
     /// <summary>Creates the plug-in with the back end its settings name.</summary>
     public TouchPlugin(TouchSettings settings, PluginContext context)
@@ -56,6 +58,7 @@ public sealed class TouchPlugin : Plugin<TouchSettings>
         _yaw = DeclareOutput("yaw", SafeValue.HoldLastFinite, "rad", "gimbal yaw");
         _button1 = DeclareOutput("button1", SafeValue.Zero, "", "first button (1 = pressed)");
         _button2 = DeclareOutput("button2", SafeValue.Zero, "", "second button (1 = pressed)");
+        _sampleAge = DeclareOutput("sample_age_ms", SafeValue.HoldLastFinite, "ms", "how old the reading is (0: new this tick); wire it to the robot's arm.input_age_ms (the master timeout)");
     }
 
     /// <summary>The back end.</summary>
@@ -76,6 +79,7 @@ public sealed class TouchPlugin : Plugin<TouchSettings>
         Write(_yaw, sample.YawRad);
         Write(_button1, sample.Button1 ? 1 : 0);
         Write(_button2, sample.Button2 ? 1 : 0);
+        Write(_sampleAge, sample.AgeMs);
     }
 
     /// <inheritdoc />

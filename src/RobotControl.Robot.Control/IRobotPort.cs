@@ -43,6 +43,30 @@ public interface IRobotPort
     /// supervisor always allows it.
     /// </summary>
     bool TeleopAllowed => true;
+
+    /// <summary>
+    /// Tells the port how old the input device data driving <paramref name="arm"/> is, ms (the master timeout: a
+    /// safety supervisor holds the arms when it is too old). A port without a supervisor ignores it.
+    /// </summary>
+    void ReportInputAge(int arm, double ageMs)
+    {
+    }
+
+    /// <summary>
+    /// Tells the port the operator's teleoperation pedal state (called every tick only when the graph wires a pedal):
+    /// a safety supervisor moves PEDAL_UP / PEDAL_DOWN with it. A port without a supervisor ignores it.
+    /// </summary>
+    void ReportPedal(bool down)
+    {
+    }
+
+    /// <summary>
+    /// Tells the port whether the operator's emergency-stop pedal or button is pressed (called every tick only when the
+    /// graph wires one): a safety supervisor goes to E-STOP when it is pressed. A port without a supervisor ignores it.
+    /// </summary>
+    void ReportEmergencyStop(bool pressed)
+    {
+    }
 }
 
 /// <summary>Robot-level fault flags, surfaced in the graph as an output.</summary>

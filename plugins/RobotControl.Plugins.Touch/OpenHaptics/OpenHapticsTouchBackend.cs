@@ -17,6 +17,8 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
     private HdServo? _servo;
     private long _sequence;
     private ServoReading _reading;
+    private long _frame = -1;
+    private double _frameSeenAt = double.NaN;
 
     public OpenHapticsTouchBackend(OpenHapticsOptions options)
     {
@@ -42,6 +44,8 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
 
         _servo = HdHost.Join(_options);
         _sequence = 0;
+        _frame = -1;
+        _frameSeenAt = double.NaN;
         var waited = System.Diagnostics.Stopwatch.StartNew();
         while (_servo.Readings.PublishedCount == 0)
         {
@@ -65,6 +69,12 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
             throw new TouchDeviceException(Fault(_reading));
         }
 
+        if (_reading.Frame != _frame || double.IsNaN(_frameSeenAt))
+        {
+            _frame = _reading.Frame;
+            _frameSeenAt = timeSeconds;
+        }
+
         ReadOnlySpan<double> m = _reading.Transform;
         var rotation = new Rotation3d(new Vector3d(m[0], m[1], m[2]), new Vector3d(m[4], m[5], m[6]), new Vector3d(m[8], m[9], m[10]));
         var (roll, pitch, yaw) = rotation.ToRollPitchYaw();
@@ -76,7 +86,8 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
             pitch,
             yaw,
             (_reading.Buttons & HdConstants.Button1) != 0,
-            (_reading.Buttons & HdConstants.Button2) != 0);
+            (_reading.Buttons & HdConstants.Button2) != 0,
+            (timeSeconds - _frameSeenAt) * 1e3); // a servo frame not renewed since this loop time
     }
 
     /// <inheritdoc />

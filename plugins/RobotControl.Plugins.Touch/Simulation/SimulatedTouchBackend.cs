@@ -18,6 +18,9 @@ public sealed class SimulatedTouchBackend : ITouchBackend
     private readonly double[] _handVelocity = new double[3];
     private double _lastTime = double.NaN;
     private int _hint;
+    private double _jumpXMm;
+    private double _frozenAt = double.NaN;
+    private TouchSample _last;
 
     /// <summary>Creates the back end.</summary>
     public SimulatedTouchBackend(HandScript script, HandModel hand, double maxForceN, double timeOffsetSeconds = 0, bool repeat = false)
@@ -48,6 +51,32 @@ public sealed class SimulatedTouchBackend : ITouchBackend
     /// <summary>The force that pushed the hand on the last exchange, N (zero while <c>force_enable</c> is off).</summary>
     public (double XN, double YN, double ZN) LastRenderedForce { get; private set; }
 
+    /// <summary>
+    /// Fault injection: from the next exchange on, every reading is <paramref name="xMm"/> further along x than the hand
+    /// (an input jump in one sample: a glitch of the encoders, a stylus knocked). Adds to earlier jumps.
+    /// </summary>
+    public void Jump(double xMm)
+    {
+        if (!double.IsFinite(xMm))
+        {
+            throw new ArgumentOutOfRangeException(nameof(xMm), xMm, "the jump must be finite");
+        }
+
+        _jumpXMm += xMm;
+    }
+
+    /// <summary>
+    /// Fault injection: the device stops giving new readings (a cable pulled, a driver hung): every exchange from the
+    /// next one on returns the last reading, its <see cref="TouchSample.AgeMs"/> growing with loop time.
+    /// </summary>
+    public void Freeze()
+    {
+        if (double.IsNaN(_frozenAt))
+        {
+            _frozenAt = double.IsNaN(_lastTime) ? 0 : _lastTime;
+        }
+    }
+
     /// <inheritdoc />
     public void Open()
     {
@@ -58,6 +87,12 @@ public sealed class SimulatedTouchBackend : ITouchBackend
     /// <inheritdoc />
     public TouchSample Exchange(double timeSeconds, in TouchForce force)
     {
+        if (!double.IsNaN(_frozenAt))
+        {
+            LastRenderedForce = (0, 0, 0); // nothing reaches a device that does not answer
+            return _last with { AgeMs = (timeSeconds - _frozenAt) * 1e3 };
+        }
+
         var t = ScriptTime(timeSeconds + _timeOffset);
         _script.Sample(t, _pose, _handVelocity, out var button1, out var button2, ref _hint);
         if (double.IsNaN(_lastTime))
@@ -73,7 +108,8 @@ public sealed class SimulatedTouchBackend : ITouchBackend
 
         _lastTime = timeSeconds;
         var p = _hand.Position;
-        return new TouchSample(p[0], p[1], p[2], _pose[3], _pose[4], _pose[5], button1, button2);
+        _last = new TouchSample(p[0] + _jumpXMm, p[1], p[2], _pose[3], _pose[4], _pose[5], button1, button2);
+        return _last;
     }
 
     /// <inheritdoc />

@@ -8,7 +8,8 @@ namespace RobotControl.Host.Harness;
 /// the safety faults (<see cref="TimedFaultKind"/>): <c>stall=100ms@5s</c> (the host stops for that long),
 /// <c>stuck=right.elbow@5s</c> (locked rotor), <c>current=right.elbow@5s</c> (current spike at the sensor),
 /// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint), <c>pot=right.elbow@5s</c> (the joint pot fails), <c>silent=right.forearm@5s</c> (the module's
-/// replies stop).
+/// replies stop), <c>jump=touch_right:50mm@5s</c> (a simulated Touch's reading jumps 50 mm along x in one sample and
+/// stays offset) and <c>stale=touch_right@5s</c> (a simulated Touch stops giving new readings: the master timeout).
 /// </summary>
 /// <param name="BitErrorRate">Probability that a bit on the wire flips.</param>
 /// <param name="Resets">Module resets: which module and when (run time).</param>
@@ -19,7 +20,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
     public static FaultInjection None { get; } = new(0, []);
 
     /// <summary>The syntax, for <c>--help</c> and messages.</summary>
-    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, pot=<arm.motor>@<time>, nan=<plug-in>@<time>";
+    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, pot=<arm.motor>@<time>, nan=<plug-in>@<time>, jump=<touch>:<distance>mm@<time>, stale=<touch>@<time>";
 
     /// <summary>The safety faults (empty when none).</summary>
     public IReadOnlyList<TimedFault> TimedFaults => Timed ?? [];
@@ -68,6 +69,8 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
                 case "current":
                 case "nan":
                 case "pot":
+                case "jump":
+                case "stale":
                     timed.Add(ParseTimed(part, key, value));
                     break;
                 default:
@@ -89,11 +92,24 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
         var at = value.LastIndexOf('@');
         if (at <= 0)
         {
-            throw new FormatException($"--inject '{part}': expected {key}=<{key switch { "stall" => "duration", "nan" => "plug-in", "silent" => "arm.location or id", _ => "arm.motor" }}>@<time>, e.g. {key}={key switch { "stall" => "100ms", "nan" => "ik_right", "silent" => "right.forearm", _ => "right.elbow" }}@5s");
+            throw new FormatException($"--inject '{part}': expected {key}=<{key switch { "stall" => "duration", "nan" => "plug-in", "silent" => "arm.location or id", "jump" => "touch>:<distance>mm", "stale" => "touch", _ => "arm.motor" }}>@<time>, e.g. {key}={key switch { "stall" => "100ms", "nan" => "ik_right", "silent" => "right.forearm", "jump" => "touch_right:50mm", "stale" => "touch_right", _ => "right.elbow" }}@5s");
         }
 
-        var kind = key switch { "silent" => TimedFaultKind.Silent, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, "pot" => TimedFaultKind.Pot, _ => TimedFaultKind.Nan };
+        var kind = key switch { "silent" => TimedFaultKind.Silent, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, "pot" => TimedFaultKind.Pot, "jump" => TimedFaultKind.Jump, "stale" => TimedFaultKind.Stale, _ => TimedFaultKind.Nan };
         var target = value[..at];
+        if (kind == TimedFaultKind.Jump)
+        {
+            var colon = target.LastIndexOf(':');
+            var distance = colon > 0 ? target[(colon + 1)..].Trim().ToLowerInvariant() : "";
+            if (colon <= 0 || !distance.EndsWith("mm", StringComparison.Ordinal)
+                || !double.TryParse(distance[..^2], NumberStyles.Float, CultureInfo.InvariantCulture, out var mm) || !double.IsFinite(mm) || mm == 0 || Math.Abs(mm) > 1000)
+            {
+                throw new FormatException($"--inject '{part}': expected jump=<touch>:<distance>mm@<time> with a distance from -1000 to 1000 mm other than 0, e.g. jump=touch_right:50mm@5s");
+            }
+
+            return new TimedFault(kind, target[..colon], TimeSpan.Zero, RunDuration.Parse(value[(at + 1)..]), mm);
+        }
+
         var stall = kind == TimedFaultKind.Stall ? RunDuration.Parse(target) : TimeSpan.Zero;
         if (kind == TimedFaultKind.Stall && stall <= TimeSpan.Zero)
         {
@@ -124,18 +140,26 @@ public enum TimedFaultKind
 
     /// <summary>A motor's joint pot fails: its wiper opens and the ADC reads 0 whatever the joint does.</summary>
     Pot,
+
+    /// <summary>A simulated Touch's reading jumps along x in one sample (and stays offset).</summary>
+    Jump,
+
+    /// <summary>A simulated Touch stops giving new readings (its sample age grows: the master timeout).</summary>
+    Stale,
 }
 
 /// <summary>One safety fault.</summary>
 /// <param name="Kind">What.</param>
-/// <param name="Target">Motor (<c>arm.motor</c>) or plug-in instance; empty for a stall.</param>
+/// <param name="Target">Motor (<c>arm.motor</c>), module or plug-in instance; empty for a stall.</param>
 /// <param name="Duration">How long a stall lasts.</param>
 /// <param name="At">When, in run time.</param>
-public sealed record TimedFault(TimedFaultKind Kind, string Target, TimeSpan Duration, TimeSpan At)
+/// <param name="JumpMm">How far a jump moves the reading, mm.</param>
+public sealed record TimedFault(TimedFaultKind Kind, string Target, TimeSpan Duration, TimeSpan At, double JumpMm = 0)
 {
     /// <inheritdoc />
     public override string ToString() => Kind switch
     {
+        TimedFaultKind.Jump => string.Create(CultureInfo.InvariantCulture, $"jump={Target}:{JumpMm:0.###}mm@{At.TotalSeconds:0.###}s"),
         TimedFaultKind.Stall => string.Create(CultureInfo.InvariantCulture, $"stall={Duration.TotalMilliseconds:0.###}ms@{At.TotalSeconds:0.###}s"),
         _ => string.Create(CultureInfo.InvariantCulture, $"{Kind.ToString().ToLowerInvariant()}={Target}@{At.TotalSeconds:0.###}s"),
     };

@@ -71,7 +71,7 @@ public static class HeadlessRun
 
         var safetyFaults = new SafetyFaultSchedule(options.Inject.TimedFaults, sim, bus, session.Graph, begin, clock.TimestampFrequency);
         var around = hooks?.AroundTick;
-        PressPedal(session.Supervisor, begin);
+        PressPedal(session, begin);
         var loop = session.Loop;
         var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
@@ -126,11 +126,17 @@ public static class HeadlessRun
         };
     }
 
-    /// <summary>The shipped graphs have no pedal plug-in: the harness is the operator and holds the pedal down for the run.</summary>
-    private static void PressPedal(SafetySupervisor supervisor, long begin)
+    /// <summary>
+    /// Without a pedal wired to the robot node (the shipped graphs), the harness is the operator and holds the pedal
+    /// down for the run; with one, the pedal moves the run level (<see cref="SafetySupervisor"/>).
+    /// </summary>
+    private static void PressPedal(RobotSession session, long begin)
     {
-        supervisor.SetOrigin(begin);
-        supervisor.PedalDown("harness");
+        session.Supervisor.SetOrigin(begin);
+        if (!session.Graph.Document.Wires.Any(w => w.To == $"{RobotNode.InstanceName}.pedal"))
+        {
+            session.Supervisor.PedalDown("harness");
+        }
     }
 
     /// <summary>A real-time run with measurement hooks (benchmarks): a wrapper around the bus link, and one call after the run.</summary>
@@ -158,7 +164,7 @@ public static class HeadlessRun
         var threads = options.Threads ?? RealtimeThreads.Default;
         session.StartRealtime(threads); // warm-up, homing, motors on: the run's time starts when the threads do
         var begin = clock.GetTimestamp();
-        PressPedal(session.Supervisor, begin);
+        PressPedal(session, begin);
         try
         {
             while (clock.GetElapsedTime(begin) < options.Duration && loop.ThreadFailure is null && !stopper.ShouldStop())

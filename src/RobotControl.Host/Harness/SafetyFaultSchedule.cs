@@ -1,3 +1,5 @@
+using RobotControl.Plugins.Touch;
+using RobotControl.Plugins.Touch.Simulation;
 using RobotControl.Robot.Bus;
 using RobotControl.Runtime.GraphFiles;
 using RobotControl.Runtime.Robot;
@@ -37,7 +39,7 @@ internal sealed class SafetyFaultSchedule
     /// <summary>Faults not applied yet.</summary>
     public int Remaining => _pending.Length - _next;
 
-    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (stall, stuck, current, pot).</summary>
+    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (stall, stuck, current, pot, jump, stale).</summary>
     public void BeforeTick(long timestamp)
     {
         while (_next < _pending.Length && _pending[_next].At <= timestamp && _pending[_next].Fault.Kind != TimedFaultKind.Nan)
@@ -56,6 +58,12 @@ internal sealed class SafetyFaultSchedule
                     break;
                 case TimedFaultKind.Pot:
                     p.Axis!.PotFailedRaw = 0; // an open wiper pulled to ground
+                    break;
+                case TimedFaultKind.Jump:
+                    p.Touch!.Jump(p.Fault.JumpMm);
+                    break;
+                case TimedFaultKind.Stale:
+                    p.Touch!.Freeze();
                     break;
             }
         }
@@ -80,6 +88,12 @@ internal sealed class SafetyFaultSchedule
                 var axis = sim.Axes.FirstOrDefault(a => string.Equals(a.Config.FullName, f.Target, StringComparison.OrdinalIgnoreCase))
                     ?? throw new FormatException($"--inject '{f}': no motor '{f.Target}' (known: {string.Join(", ", sim.Axes.Select(a => a.Config.FullName))})");
                 return new Pending(f, at, axis, -1);
+            case TimedFaultKind.Jump:
+            case TimedFaultKind.Stale:
+                var touches = graph.Program.Order.OfType<TouchPlugin>().ToList();
+                var touch = touches.FirstOrDefault(t => t.Name == f.Target)?.Backend as SimulatedTouchBackend
+                    ?? throw new FormatException($"--inject '{f}': no simulated Touch '{f.Target}' in the graph (simulated Touch instances: {string.Join(", ", touches.Where(t => t.Backend is SimulatedTouchBackend).Select(t => t.Name))})");
+                return new Pending(f, at, null, -1, touch);
             case TimedFaultKind.Nan:
                 var prefix = $"{RobotNode.InstanceName}.";
                 var wire = graph.Document.Wires.FirstOrDefault(w => w.From.StartsWith(f.Target + ".", StringComparison.Ordinal) && w.To.StartsWith(prefix, StringComparison.Ordinal))
@@ -92,5 +106,5 @@ internal sealed class SafetyFaultSchedule
         }
     }
 
-    private sealed record Pending(TimedFault Fault, long At, VirtualAxis? Axis, int Arm);
+    private sealed record Pending(TimedFault Fault, long At, VirtualAxis? Axis, int Arm, SimulatedTouchBackend? Touch = null);
 }

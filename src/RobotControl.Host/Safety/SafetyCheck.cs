@@ -26,6 +26,9 @@ public enum SafetyCheck
 
     /// <summary>An operator (console, CLI or pedal) asked for an emergency stop.</summary>
     Operator,
+
+    /// <summary>The input device data driving an arm is older than the limit (the master timeout): back to PEDAL_UP when its safe state is hold.</summary>
+    MasterTimeout,
 }
 
 /// <summary>What the robot does after a trip.</summary>
@@ -52,6 +55,7 @@ public static class SafetyNames
         SafetyCheck.DeadlineMiss => "deadline_miss",
         SafetyCheck.ModuleFault => "module_fault",
         SafetyCheck.Operator => "operator",
+        SafetyCheck.MasterTimeout => "master_timeout",
         _ => check.ToString(),
     };
 

@@ -30,6 +30,9 @@ public sealed record SafetyLimits
     /// <summary>Loop periods without a cycle that count as a stall (k consecutive deadline misses; default 10).</summary>
     public int DeadlineMissesInARow { get; init; } = 10;
 
+    /// <summary>How old the input device data driving an arm may be while teleoperation drives it, ms (default 50: the master timeout).</summary>
+    public double MasterTimeoutMs { get; init; } = 50;
+
     /// <summary>Per-motor thresholds that override the robot-wide ones, by motor name (<c>arm.motor</c>, e.g. <c>right.elbow</c>).</summary>
     public IReadOnlyDictionary<string, MotorSafetyLimits> Motors { get; init; } = new Dictionary<string, MotorSafetyLimits>();
 
@@ -39,7 +42,7 @@ public sealed record SafetyLimits
     /// <summary>The pot/encoder distance limit of motor <paramref name="motor"/> (its own, else <see cref="PotDistanceRad"/>).</summary>
     public double PotDistanceRadOf(string motor) => Motors.TryGetValue(motor, out var m) && m.PotDistanceRad is { } v ? v : PotDistanceRad;
 
-    /// <summary>Safe state per check (defaults: hold for soft trips; torque off for a silent module, over-current, a pot/encoder mismatch and module faults).</summary>
+    /// <summary>Safe state per check (defaults: hold for soft trips, the master timeout's hold going back to PEDAL_UP instead of E_STOP; torque off for a silent module, over-current, a pot/encoder mismatch and module faults).</summary>
     public IReadOnlyDictionary<SafetyCheck, SafeState> SafeStates { get; init; } = DefaultSafeStates;
 
     /// <summary>The defaults of <see cref="SafeStates"/>.</summary>
@@ -53,6 +56,7 @@ public sealed record SafetyLimits
         [SafetyCheck.DeadlineMiss] = SafeState.Hold,
         [SafetyCheck.ModuleFault] = SafeState.TorqueOff,
         [SafetyCheck.Operator] = SafeState.Hold,
+        [SafetyCheck.MasterTimeout] = SafeState.Hold,
     };
 
     /// <summary>The safe state of <paramref name="check"/>.</summary>

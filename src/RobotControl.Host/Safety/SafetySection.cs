@@ -8,7 +8,7 @@ namespace RobotControl.Host.Safety;
 /// <code>
 /// "safety": { "tracking_error_rad": 0.35, "tracking_error_ms": 50, "current_limit_fraction": 0.95,
 ///             "over_current_ms": 50, "pot_distance_rad": 0.087, "pot_mismatch_ms": 10,
-///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10,
+///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10, "master_timeout_ms": 50,
 ///             "safe_state": { "tracking_error": "hold", "over_current": "torque_off" },
 ///             "motors": { "right.elbow": { "tracking_error_rad": 0.2, "pot_distance_rad": 0.1 } } }
 /// </code>
@@ -16,7 +16,7 @@ namespace RobotControl.Host.Safety;
 public static class SafetySection
 {
     private static readonly string[] Fields =
-        ["tracking_error_rad", "tracking_error_ms", "current_limit_fraction", "over_current_ms", "pot_distance_rad", "pot_mismatch_ms", "module_silent_ms", "deadline_misses_in_a_row", "safe_state", "motors"];
+        ["tracking_error_rad", "tracking_error_ms", "current_limit_fraction", "over_current_ms", "pot_distance_rad", "pot_mismatch_ms", "module_silent_ms", "deadline_misses_in_a_row", "master_timeout_ms", "safe_state", "motors"];
 
     private static readonly string[] MotorFields = ["tracking_error_rad", "pot_distance_rad"];
 
@@ -62,6 +62,7 @@ public static class SafetySection
             PotMismatchMs = Number(section, "pot_mismatch_ms", d.PotMismatchMs, 0, 10_000, file),
             ModuleSilentMs = Number(section, "module_silent_ms", d.ModuleSilentMs, 0, 10_000, file),
             DeadlineMissesInARow = (int)Number(section, "deadline_misses_in_a_row", d.DeadlineMissesInARow, 1, 100_000, file, integer: true),
+            MasterTimeoutMs = Number(section, "master_timeout_ms", d.MasterTimeoutMs, 1, 10_000, file),
             SafeStates = SafeStates(section, file),
             Motors = PerMotor(section, file, motors),
         };

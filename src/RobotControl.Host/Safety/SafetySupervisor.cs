@@ -13,11 +13,18 @@ namespace RobotControl.Host.Safety;
 /// <see cref="RunLevel.PedalDown"/> the robot holds (goals frozen at the measured positions: teleoperation is
 /// ignored); every goal is under the robot layer's step cap. A trip records what crossed which limit, puts the robot
 /// in the check's safe state (<see cref="SafetyLimits.SafeStateOf"/>) and moves to <see cref="RunLevel.EStop"/>;
-/// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again.
+/// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again. The master
+/// timeout (input device data older than its limit, <see cref="BusRobot.InputAgeMs"/>) is the one soft trip that,
+/// with its default safe state hold, goes back to <see cref="RunLevel.PedalUp"/> instead (as the Raven-II's
+/// master-data timeout forces pedal-up): the operator may press the pedal again once the data is fresh. When the graph
+/// wires a pedal to the robot node (<see cref="BusRobot.Pedal"/>), PEDAL_UP and PEDAL_DOWN follow it (a press moves
+/// to PEDAL_DOWN only from PEDAL_UP, so after a timeout or a trip the operator lifts and presses again); an
+/// emergency-stop pedal or button (<see cref="BusRobot.EmergencyStopPedal"/>) trips E-STOP when pressed.
 /// </summary>
 public sealed class SafetySupervisor
 {
     private const string TripSource = "supervisor";
+    private const string PedalSource = "pedal";
     private readonly BusRobot _robot;
     private readonly TimeProvider _time;
     private readonly RunLevelMachine _levels;
@@ -39,9 +46,12 @@ public sealed class SafetySupervisor
     private readonly long _potTicks;
     private readonly long _silentTicks;
     private readonly long _stallTicks;
+    private readonly int _arms;
     private long _lastCycle;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
+    private OperatorPedal _lastPedal;
+    private OperatorPedal _lastEmergencyStop;
 
     /// <summary>A supervisor of <paramref name="robot"/> (discovered) at <see cref="RunLevel.Init"/>; it checks every cycle from now on.</summary>
     /// <param name="robot">The robot layer (its clock is the supervisor's).</param>
@@ -73,6 +83,7 @@ public sealed class SafetySupervisor
         _potTicks = (long)(limits.PotMismatchMs * 1e-3 * f);
         _silentTicks = (long)(limits.ModuleSilentMs * 1e-3 * f);
         _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
+        _arms = robot.ArmCount;
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.AfterUpdate = CheckCycle;
@@ -168,12 +179,22 @@ public sealed class SafetySupervisor
     }
 
     /// <summary>PEDAL_UP -> PEDAL_DOWN: teleoperation drives the arms (from the measured positions, under the step cap).</summary>
-    /// <exception cref="InvalidOperationException">Not at PEDAL_UP.</exception>
+    /// <exception cref="InvalidOperationException">Not at PEDAL_UP, or an arm's input device data is older than the master timeout.</exception>
     public void PedalDown(string source)
     {
         if (!_levels.CanMoveTo(RunLevel.PedalDown))
         {
             throw new InvalidOperationException($"pedal down ({source}) needs the run level PEDAL_UP, it is {Level.Name()}");
+        }
+
+        if (StaleArm() is { } stale)
+        {
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the input data of the {_robot.Definition.Arms[stale.Arm].Name} arm is {stale.AgeMs:0.#} ms old (master_timeout_ms {Limits.MasterTimeoutMs:0.#})"));
+        }
+
+        lock (_tripGate)
+        {
+            _tripped[(int)SafetyCheck.MasterTimeout] = false; // a new episode of teleoperation: a new timeout is a new trip
         }
 
         _robot.ReleaseHold();
@@ -278,6 +299,7 @@ public sealed class SafetySupervisor
     /// <summary>The per-cycle checks (the robot's <see cref="BusRobot.AfterUpdate"/>).</summary>
     private void CheckCycle()
     {
+        FollowOperator();
         if (Level == RunLevel.Init)
         {
             _lastCycle = 0;
@@ -305,12 +327,80 @@ public sealed class SafetySupervisor
             Trip(SafetyCheck.NonFinite, "setpoint", double.NaN, 0, "rad", now);
         }
 
+        if (Level == RunLevel.PedalDown && StaleArm() is { } stale)
+        {
+            MasterTimeout(stale.Arm, stale.AgeMs, now);
+        }
+
         var driven = _robot.State == RobotState.Enabled;
         var homed = Level is RunLevel.PedalUp or RunLevel.PedalDown;
         for (var i = 0; i < _motors.Length; i++)
         {
             CheckMotor(i, driven, homed, now);
         }
+    }
+
+    /// <summary>The operator's pedals as the graph reports them (nothing when the graph has none): edges move the run level.</summary>
+    private void FollowOperator()
+    {
+        var stop = _robot.EmergencyStopPedal;
+        if (stop == OperatorPedal.Down && _lastEmergencyStop != OperatorPedal.Down && Level != RunLevel.EStop)
+        {
+            EmergencyStop(PedalSource, "emergency-stop pedal pressed");
+        }
+
+        _lastEmergencyStop = stop;
+        var pedal = _robot.Pedal;
+        if (pedal == OperatorPedal.Down && _lastPedal == OperatorPedal.Up && Level == RunLevel.PedalUp && StaleArm() is null)
+        {
+            PedalDown(PedalSource);
+        }
+        else if (pedal == OperatorPedal.Up && Level == RunLevel.PedalDown)
+        {
+            PedalUp(PedalSource, "pedal up: holding position");
+        }
+
+        _lastPedal = pedal;
+    }
+
+    /// <summary>The first arm whose input device data is older than the master timeout, with its age (ms), or null.</summary>
+    private (int Arm, double AgeMs)? StaleArm()
+    {
+        for (var a = 0; a < _arms; a++)
+        {
+            var age = _robot.InputAgeMs(a);
+            if (!(age <= Limits.MasterTimeoutMs))
+            {
+                return (a, age);
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>
+    /// The master timeout: with the safe state hold, the trip is recorded and the run level goes back to PEDAL_UP (the
+    /// arms hold, teleoperation is ignored); with torque off, it is a trip like any other (E_STOP).
+    /// </summary>
+    private void MasterTimeout(int arm, double age, long now)
+    {
+        var joint = _robot.Definition.Arms[arm].Name;
+        if (Limits.SafeStateOf(SafetyCheck.MasterTimeout) == SafeState.TorqueOff)
+        {
+            Trip(SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", now);
+            return;
+        }
+
+        lock (_tripGate)
+        {
+            if (!_tripped[(int)SafetyCheck.MasterTimeout])
+            {
+                _tripped[(int)SafetyCheck.MasterTimeout] = true;
+                _trips.Add(new SafetyTrip(now, SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", SafeState.Hold));
+            }
+        }
+
+        PedalUp(TripSource, string.Create(CultureInfo.InvariantCulture, $"master_timeout {joint}: input data {age:0.#} ms old (limit {Limits.MasterTimeoutMs:0.#}): hold"));
     }
 
     private void CheckModules(long now)

@@ -97,6 +97,7 @@ public sealed partial class BusRobot : IRobotPort, IBusCycle, IDisposable
         }
 
         Definition = robot;
+        _inputAgeMs = new double[robot.Arms.Count];
         _client = client;
         _time = client.Time;
         _options = options ?? new BusRobotOptions();

@@ -10,7 +10,10 @@ namespace RobotControl.Runtime.Robot;
 /// (<c>right.elbow</c>, radians, in the arm's own right-arm model) and the jaw (<c>right.jaw</c>); outputs are the
 /// joint positions the modules report (<c>right.elbow.position</c>), motor currents (<c>right.elbow.current</c>, A)
 /// the robot's fault flags (<c>faults</c>) and <c>teleop_enabled</c> (1 while the run level lets teleoperation drive
-/// the arms: the haptic handles' <c>force_enable</c>). Talks to an <see cref="IRobotPort"/> without blocking or allocating.
+/// the arms: the haptic handles' <c>force_enable</c>). The input <c>right.input_age_ms</c> takes how old the input
+/// device data driving the arm is (a Touch's <c>sample_age_ms</c>) and hands it to the port (the master timeout);
+/// <c>pedal</c> and <c>estop</c> (0/1, a foot-pedal plug-in's outputs) are handed to the port when wired: the safety
+/// supervisor's run level follows them. Talks to an <see cref="IRobotPort"/> without blocking or allocating.
 /// <para>
 /// Safety: when anything upstream has faulted the robot holds position (once, then stays held); a non-finite
 /// setpoint is never written (the arm holds and <see cref="RejectedSetpoints"/> counts it). Arms without a wired
@@ -25,6 +28,9 @@ public sealed class RobotNode : Plugin
     private readonly RobotDefinition _robot;
     private readonly InputPort[][] _setpoints;
     private readonly InputPort[] _jaws;
+    private readonly InputPort[] _inputAges;
+    private readonly InputPort _pedal;
+    private readonly InputPort _estop;
     private readonly OutputPort[][] _positions;
     private readonly OutputPort[][] _currents;
     private readonly OutputPort _faults;
@@ -35,6 +41,8 @@ public sealed class RobotNode : Plugin
     private readonly bool[] _commandedThisTick;
     private bool[] _armDriven;
     private bool[] _jawDriven;
+    private bool _pedalWired;
+    private bool _estopWired;
     private IRobotPort? _port;
     private long _rejected;
 
@@ -48,6 +56,7 @@ public sealed class RobotNode : Plugin
         var jointCount = robot.JointCount;
         _setpoints = new InputPort[arms][];
         _jaws = new InputPort[arms];
+        _inputAges = new InputPort[arms];
         _positions = new OutputPort[arms][];
         _currents = new OutputPort[arms][];
         _commanded = new double[arms][];
@@ -56,6 +65,7 @@ public sealed class RobotNode : Plugin
             var arm = robot.Arms[a].Name;
             _setpoints[a] = [.. robot.Joints.Select(j => DeclareInput($"{arm}.{j.Name}", "rad", $"{arm} arm {j.Name} setpoint"))];
             _jaws[a] = DeclareInput($"{arm}.jaw", "rad", $"{arm} arm jaw opening setpoint");
+            _inputAges[a] = DeclareInput($"{arm}.input_age_ms", "ms", $"how old the input device data driving the {arm} arm is (a Touch's sample_age_ms; unwired: 0, no master timeout)");
             _commanded[a] = new double[jointCount];
         }
 
@@ -66,6 +76,8 @@ public sealed class RobotNode : Plugin
             _currents[a] = [.. robot.Actuators.Select(m => DeclareOutput($"{arm}.{m.Name}.current", SafeValue.Zero, "A", $"{arm} arm {m.Label} filtered motor current"))];
         }
 
+        _pedal = DeclareInput("pedal", "", "teleoperation pedal (1 = pressed: PEDAL_DOWN, 0: PEDAL_UP), e.g. a foot_pedals output; unwired: the host presses it");
+        _estop = DeclareInput("estop", "", "emergency-stop pedal or button (1 = pressed: E_STOP)");
         _faults = DeclareOutput("faults", SafeValue.HoldLastFinite, "", "robot fault flags (RobotFaults)");
         _teleopEnabled = DeclareOutput("teleop_enabled", SafeValue.Zero, "", "1 while the run level lets teleoperation drive the arms, else 0 (wire it to the haptic handles' force_enable)");
         _joints = new double[jointCount];
@@ -138,6 +150,21 @@ public sealed class RobotNode : Plugin
             }
         }
 
+        for (var a = 0; a < _inputAges.Length; a++)
+        {
+            port.ReportInputAge(a, Read(_inputAges[a]));
+        }
+
+        if (_pedalWired)
+        {
+            port.ReportPedal(Read(_pedal) >= 0.5);
+        }
+
+        if (_estopWired)
+        {
+            port.ReportEmergencyStop(Read(_estop) >= 0.5);
+        }
+
         Write(_faults, (int)port.Faults);
         Write(_teleopEnabled, port.TeleopAllowed && !UpstreamFaulted ? 1 : 0);
         if (UpstreamFaulted)
@@ -191,5 +218,7 @@ public sealed class RobotNode : Plugin
         var wired = wiredInputs.ToHashSet(StringComparer.Ordinal);
         _armDriven = [.. _robot.Arms.Select(arm => _robot.Joints.Any(j => wired.Contains($"{InstanceName}.{arm.Name}.{j.Name}")))];
         _jawDriven = [.. _robot.Arms.Select(arm => wired.Contains($"{InstanceName}.{arm.Name}.jaw"))];
+        _pedalWired = wired.Contains($"{InstanceName}.pedal");
+        _estopWired = wired.Contains($"{InstanceName}.estop");
     }
 }

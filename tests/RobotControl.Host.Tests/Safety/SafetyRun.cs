@@ -36,7 +36,8 @@ internal sealed class SafetyRun
 
     public SafetyReport Safety => Report.Safety!;
 
-    public static SafetyRun Of(string inject, double seconds, string? graph = null)
+    /// <summary>A run; <paramref name="afterRun"/> acts on the supervisor after the last tick, before the run level is read.</summary>
+    public static SafetyRun Of(string inject, double seconds, string? graph = null, Action<SafetySupervisor>? afterRun = null)
     {
         var goal = ControlTable.Firmware["goal_position"];
         GoalFrameSpy? spy = null;
@@ -65,6 +66,7 @@ internal sealed class SafetyRun
                 AfterRun = session =>
                 {
                     origin = session.Supervisor.Origin / (double)session.Clock.TimestampFrequency;
+                    afterRun?.Invoke(session.Supervisor);
                     lastForceS = lastForceAt == long.MinValue ? double.NegativeInfinity : (lastForceAt - session.Supervisor.Origin) / (double)session.Clock.TimestampFrequency;
                     level = session.Supervisor.Level;
                     foreach (var m in session.Robot.Motors)
@@ -126,9 +128,12 @@ internal sealed class SafetyRun
     }
 
     /// <summary>True when every goal frame from <paramref name="fromS"/> (run time) on carries the same goals.</summary>
-    public bool GoalsFrozenFrom(double fromS)
+    public bool GoalsFrozenFrom(double fromS) => GoalsFrozenBetween(fromS, double.PositiveInfinity);
+
+    /// <summary>True when every goal frame from <paramref name="fromS"/> to <paramref name="untilS"/> (run time) carries the same goals.</summary>
+    public bool GoalsFrozenBetween(double fromS, double untilS)
     {
-        var frames = Spy.Frames.Where(f => f.TimeS - OriginS >= fromS).ToList();
+        var frames = Spy.Frames.Where(f => f.TimeS - OriginS >= fromS && f.TimeS - OriginS < untilS).ToList();
         Assert.NotEmpty(frames);
         return frames.All(f => Motors.All(m => !f.Goals.TryGetValue(m.ModuleId, out var g) || g[m.Channel] == frames[0].Goals[m.ModuleId][m.Channel]));
     }
