@@ -43,7 +43,7 @@ run_dotnet() {
       echo "mutation: $name: no $project or no $tests; skipped"
       continue
     fi
-    # The scope (which files are mutated, and why) is in tools/mutation/NAME.json; without one, the whole project.
+    # The scope (which files are mutated, and why) is in tools/mutation/<Project>.json; without one, the whole project.
     config=("--project" "RobotControl.$name.csproj" "--configuration" "Release")
     [ -f "$root/tools/mutation/$name.json" ] && config=("--config-file" "$root/tools/mutation/$name.json")
     echo "== Stryker.NET: RobotControl.$name (tests: $tests, concurrency $concurrency)"

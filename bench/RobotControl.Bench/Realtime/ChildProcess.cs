@@ -52,7 +52,7 @@ internal sealed class ChildProcess : IDisposable
         }
         catch (System.ComponentModel.Win32Exception ex)
         {
-            problem = $"stress-ng: {ex.Message} (apt-get install stress-ng)";
+            problem = ex.NativeErrorCode == 2 ? "stress-ng is not installed (apt-get install stress-ng)" : $"stress-ng did not start (error {ex.NativeErrorCode})";
             return null;
         }
     }

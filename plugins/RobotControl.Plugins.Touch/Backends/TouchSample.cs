@@ -9,7 +9,7 @@ namespace RobotControl.Plugins.Touch.Backends;
 /// <param name="YawRad">Gimbal yaw, radians.</param>
 /// <param name="Button1">First stylus button (the clutch in the shipped graphs).</param>
 /// <param name="Button2">Second stylus button.</param>
-/// <param name="AgeMs">How old the reading is when the loop gets it, ms of loop time (0: read this tick); it grows while the device gives no new reading.</param>
+/// <param name="AgeMs">How old the reading is when the loop gets it, ms (0: read this tick; the real device counts wall time since its servo frame last changed); it grows while the device gives no new reading.</param>
 public readonly record struct TouchSample(double XMm, double YMm, double ZMm, double RollRad, double PitchRad, double YawRad, bool Button1, bool Button2, double AgeMs = 0);
 
 /// <summary>A force for the device to render, newtons, device frame.</summary>

@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using RobotControl.Kinematics.Geometry;
 using RobotControl.Plugins.Touch.Backends;
 
@@ -18,7 +19,7 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
     private long _sequence;
     private ServoReading _reading;
     private long _frame = -1;
-    private double _frameSeenAt = double.NaN;
+    private long _frameSeenAt = -1; // Stopwatch timestamp: the device's servo thread runs on the wall clock
 
     public OpenHapticsTouchBackend(OpenHapticsOptions options)
     {
@@ -45,7 +46,7 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
         _servo = HdHost.Join(_options);
         _sequence = 0;
         _frame = -1;
-        _frameSeenAt = double.NaN;
+        _frameSeenAt = -1;
         var waited = System.Diagnostics.Stopwatch.StartNew();
         while (_servo.Readings.PublishedCount == 0)
         {
@@ -69,10 +70,10 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
             throw new TouchDeviceException(Fault(_reading));
         }
 
-        if (_reading.Frame != _frame || double.IsNaN(_frameSeenAt))
+        if (_reading.Frame != _frame || _frameSeenAt < 0)
         {
             _frame = _reading.Frame;
-            _frameSeenAt = timeSeconds;
+            _frameSeenAt = Stopwatch.GetTimestamp();
         }
 
         ReadOnlySpan<double> m = _reading.Transform;
@@ -87,7 +88,7 @@ internal sealed class OpenHapticsTouchBackend : ITouchBackend
             yaw,
             (_reading.Buttons & HdConstants.Button1) != 0,
             (_reading.Buttons & HdConstants.Button2) != 0,
-            (timeSeconds - _frameSeenAt) * 1e3); // a servo frame not renewed since this loop time
+            Stopwatch.GetElapsedTime(_frameSeenAt).TotalMilliseconds); // wall time since the servo frame last changed (a virtual-clock run may be faster than the device)
     }
 
     /// <inheritdoc />
