@@ -1,9 +1,5 @@
 using System.Text.Json;
-using System.Text.RegularExpressions;
-using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Loading;
 
 namespace RobotControl.Cli.Tests.Commands.Run;
 
@@ -13,17 +9,16 @@ namespace RobotControl.Cli.Tests.Commands.Run;
 /// arms move, the report is written and the motors are off afterwards.
 /// </summary>
 [Collection(RunProcess.Collection)]
-public sealed partial class RealtimeRunTests
+public sealed class RealtimeRunTests
 {
     private static readonly TimeSpan Patience = TimeSpan.FromSeconds(90);
 
     [Fact]
     public void A_wall_clock_run_on_a_pty_finds_the_modules_moves_the_arms_and_writes_its_report()
     {
-        var robotFile = RunProcess.RepoFile("hardware", "robots", "lb-1.0.json");
-        using var sim = new RunProcess("bus-sim", robotFile, "--pty");
-        var transport = TransportOf().Match(sim.WaitFor("serving", Patience)).Value;
-        var before = Positions(transport, robotFile);
+        using var sim = new SimulatorProcess(Patience);
+        var transport = sim.Transport;
+        var before = Positions(sim);
         var report = Path.Combine(Directory.CreateTempSubdirectory("rcrt").FullName, "report.json");
 
         // --continue-on-fault: a loaded machine may starve the simulator process; the path is what is tested here.
@@ -47,20 +42,19 @@ public sealed partial class RealtimeRunTests
             root.GetProperty("safety").GetProperty("run_levels").EnumerateArray().Take(3).Select(t => t.GetProperty("from").GetString()).Append(root.GetProperty("safety").GetProperty("run_levels")[2].GetProperty("to").GetString()));
 
         // The arms moved: the modules' own position counters, read over the pty after the run, differ from before.
-        var after = Positions(transport, robotFile);
+        var after = Positions(sim);
         Assert.Equal(before.Count, after.Count);
         Assert.Contains(before.Keys, k => Math.Abs(after[k] - before[k]) > 20);
     }
 
     /// <summary>Every motor's present position (counts), read over the pty independently of robotctl.</summary>
-    private static Dictionary<string, int> Positions(string transport, string robotFile)
+    private static Dictionary<string, int> Positions(SimulatorProcess sim)
     {
-        var robot = RobotLoader.Load(robotFile);
         var position = ControlTable.Firmware["present_position"];
-        using var client = new BusClient(LinkFactory.Open(transport), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(50) });
+        using var client = sim.ReadBack();
         var result = new Dictionary<string, int>();
         var value = new byte[position.Size];
-        foreach (var m in robot.Modules.Modules)
+        foreach (var m in SimulatorProcess.Robot.Modules.Modules)
         {
             for (var channel = 0; channel < m.Motors.Count; channel++)
             {
@@ -71,7 +65,4 @@ public sealed partial class RealtimeRunTests
 
         return result;
     }
-
-    [GeneratedRegex(@"serial:\S+")]
-    private static partial Regex TransportOf();
 }

@@ -1,9 +1,6 @@
 using System.Text.Json;
-using System.Text.RegularExpressions;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Loading;
 
 namespace RobotControl.Cli.Tests.Commands.Run;
 
@@ -12,7 +9,7 @@ namespace RobotControl.Cli.Tests.Commands.Run;
 /// module, the report is written and marked interrupted, the exit code is non-zero, and the next run starts.
 /// </summary>
 [Collection(RunProcess.Collection)]
-public sealed partial class RunInterruptTests
+public sealed class RunInterruptTests
 {
     private static readonly TimeSpan Patience = TimeSpan.FromSeconds(90);
 
@@ -34,8 +31,8 @@ public sealed partial class RunInterruptTests
     [Fact]
     public void Ctrl_C_on_a_pty_bus_leaves_every_module_torque_off_without_a_latched_watchdog_and_the_next_run_starts()
     {
-        using var sim = new RunProcess("bus-sim", RunProcess.RepoFile("hardware", "robots", "lb-1.0.json"), "--pty");
-        var transport = TransportOf().Match(sim.WaitFor("serving", Patience)).Value;
+        using var sim = new SimulatorProcess(Patience);
+        var transport = sim.Transport;
         var dir = Directory.CreateTempSubdirectory("rcrun").FullName;
         var report = Path.Combine(dir, "report.json");
         // --continue-on-fault: on this shared machine the simulator process can fall behind and lose replies; the
@@ -57,13 +54,13 @@ public sealed partial class RunInterruptTests
             {
                 // The machine stalled the run (or the simulator) past the watchdog before the signal: that latch is
                 // the modules doing their job mid-run, not the stop's. Clear it deliberately, as a user would.
-                using var clear = new RunProcess("discover", transport, "--robot", RunProcess.RepoFile("hardware", "robots", "lb-1.0.json"), "--clear-faults");
+                using var clear = new RunProcess("discover", transport, "--robot", SimulatorProcess.RobotFile, "--clear-faults");
                 clear.WaitForExit(Patience);
                 Assert.Contains("cleared the latched errors", clear.Output, StringComparison.Ordinal);
             }
         }
 
-        AssertModulesSafe(transport); // read back independently: torque off everywhere, nothing latched
+        AssertModulesSafe(sim); // read back independently: torque off everywhere, nothing latched
         var next = Path.Combine(dir, "next.json");
         using (var run = new RunProcess("run", RunProcess.Graph, "--transport", transport, "--duration", "1s", "--report", next))
         {
@@ -90,13 +87,13 @@ public sealed partial class RunInterruptTests
     }
 
     /// <summary>Reads every module back over the pty, independently of robotctl: torque off, no error latched.</summary>
-    private static void AssertModulesSafe(string transport)
+    private static void AssertModulesSafe(SimulatorProcess sim)
     {
-        var robot = RobotLoader.Load(RunProcess.RepoFile("hardware", "robots", "lb-1.0.json"));
+        var robot = SimulatorProcess.Robot;
         var table = ControlTable.Firmware;
         var torque = table["torque_enable"];
         var status = table["hardware_error_status"];
-        using var client = new BusClient(LinkFactory.Open(transport), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(50) });
+        using var client = sim.ReadBack();
         var channels = new byte[((torque.Count - 1) * torque.Stride) + torque.Size];
         var error = new byte[1];
         foreach (var m in robot.Modules.Modules)
@@ -107,7 +104,4 @@ public sealed partial class RunInterruptTests
             Assert.Equal(0, error[0]);
         }
     }
-
-    [GeneratedRegex(@"serial:\S+")]
-    private static partial Regex TransportOf();
 }
