@@ -10,7 +10,7 @@ namespace RobotControl.Bench.WebConsole;
 
 /// <summary>
 /// <c>console [--graph graphs/teleop-lb.json] [--seconds 10] [--clients 3] [--repeats 3] [--chromium /usr/bin/chromium]
-/// [--dist src/RobotControl.Console/web/dist/assets] [--out docs/perf/console.json]</c>: the web console on the virtual robot (real time). Per repeat, two fresh sessions:
+/// [--dist &lt;assets folder of the front-end build&gt;] [--out docs/perf/console.json]</c>: the web console on the virtual robot (real time). Per repeat, two fresh sessions:
 /// one without clients and one streaming every joint position and command to N WebSocket clients at 60 Hz (each also
 /// polling status and controllers as the pages do): the loop's tick time, deadline misses and bytes allocated per
 /// tick. Then, in headless Chromium: the signal-change-to-display latency (a timestamp round trip in the page), the
