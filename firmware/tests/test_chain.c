@@ -168,6 +168,47 @@ static void fast_read_after_a_missing_module_stops(void)
     rcfw_bus_destroy(bus);
 }
 
+/* A broken transmit line (silent=): the module still hears and obeys the host, but nothing it sends reaches the
+ * line, so the host hears no reply and the modules after it in a chained read wait for it in vain. */
+static void a_module_with_a_broken_transmit_line_is_heard_by_nobody(void)
+{
+    rcfw_bus *bus = make3();
+    status_t st[4];
+    CHECK_EQ(rcfw_set_tx_broken(bus, 1, 1), RCFW_HOST_OK); /* module index 1 = id 2 */
+    send_frame(bus, 2, RCFW_INST_PING, 0, 0);
+    CHECK_EQ(collect(bus, 5000, st, 4), 0);
+    wr16(bus, 2, RCFW_CT_BUS_WATCHDOG, 40); /* still obeyed */
+    CHECK_EQ(collect(bus, 5000, st, 4), 0);
+    CHECK_EQ(peek16(bus, 1, RCFW_CT_BUS_WATCHDOG), 40);
+    uint8_t q[7] = {(uint8_t)RCFW_CT_ID, 0, 1, 0, 1, 2, 3};
+    send_frame(bus, RCFW_ID_BROADCAST, RCFW_INST_FAST_SYNC_READ, q, 7);
+    rcfw_advance_us(bus, 5000);
+    uint8_t pk[64];
+    CHECK_EQ(rcfw_bus_read(bus, pk, sizeof pk), 8 + 5); /* header and id 1's part; id 3 waits for id 2 */
+    CHECK_EQ(pk[9], 1);
+    CHECK_EQ(rcfw_set_tx_broken(bus, 1, 0), RCFW_HOST_OK);
+    send_frame(bus, 2, RCFW_INST_PING, 0, 0);
+    CHECK_EQ(collect(bus, 5000, st, 4), 1);
+    CHECK_EQ(st[0].id, 2);
+    CHECK_EQ(rcfw_set_tx_broken(bus, 3, 1), RCFW_HOST_EARG);
+    CHECK_EQ(rcfw_bus_collisions(bus), 0);
+    rcfw_bus_destroy(bus);
+}
+
+/* A write that did not come from the host under test goes through the module's own checks and is applied. */
+static void a_table_write_without_a_frame_is_checked_and_applied(void)
+{
+    rcfw_bus *bus = make3();
+    const uint8_t thirty[2] = {30, 0}, too_long[2] = {0x61, 0xEA}; /* 30 ms; 60001 ms > max 60000 */
+    CHECK_EQ(rcfw_table_write(bus, 0, RCFW_CT_BUS_WATCHDOG, thirty, 2), 0);
+    CHECK_EQ(peek16(bus, 0, RCFW_CT_BUS_WATCHDOG), 30);
+    CHECK_EQ(rcfw_table_write(bus, 0, RCFW_CT_BUS_WATCHDOG, too_long, 2), RCFW_ERR_DATA_RANGE);
+    CHECK_EQ(peek16(bus, 0, RCFW_CT_BUS_WATCHDOG), 30);
+    CHECK_EQ(rcfw_table_write(bus, 7, RCFW_CT_BUS_WATCHDOG, thirty, 2), RCFW_HOST_EARG);
+    CHECK_EQ(rcfw_table_write(bus, 0, RCFW_CT_BUS_WATCHDOG, thirty, 0), RCFW_HOST_EARG);
+    rcfw_bus_destroy(bus);
+}
+
 int main(void)
 {
     TF_RUN(sync_read_replies_follow_each_other);
@@ -176,5 +217,7 @@ int main(void)
     TF_RUN(fast_sync_read_is_one_packet_with_a_crc_per_part);
     TF_RUN(fast_bulk_read_parts_of_different_lengths_and_errors);
     TF_RUN(fast_read_after_a_missing_module_stops);
+    TF_RUN(a_module_with_a_broken_transmit_line_is_heard_by_nobody);
+    TF_RUN(a_table_write_without_a_frame_is_checked_and_applied);
     TF_END();
 }

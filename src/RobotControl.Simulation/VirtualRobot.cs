@@ -203,6 +203,27 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         }
     }
 
+    /// <summary>
+    /// Breaks (or mends) module <paramref name="moduleId"/>'s transmit line: from now on its replies never reach the
+    /// bus (the host hears nothing from it, and the modules after it in a chained FAST/SYNC/BULK READ wait for it in
+    /// vain), while it still hears and obeys the host. The fault of <c>--inject silent=</c>.
+    /// </summary>
+    public void BreakTransmitLine(byte moduleId, bool broken = true) =>
+        FirmwareHost.Check(FirmwareHost.SetTransmitBroken(_bus, ModuleIndex(moduleId), broken ? 1 : 0), "rcfw_set_tx_broken");
+
+    /// <summary>
+    /// Writes <paramref name="data"/> into module <paramref name="moduleId"/>'s control table at
+    /// <paramref name="address"/> through the module's own write checks, without a frame on the bus: a write that did
+    /// not come from this host (e.g. a stray frame). Returns the protocol error the module gave (0: applied).
+    /// </summary>
+    public int WriteTable(byte moduleId, ushort address, ReadOnlySpan<byte> data)
+    {
+        fixed (byte* p = data)
+        {
+            return FirmwareHost.Check(FirmwareHost.TableWrite(_bus, ModuleIndex(moduleId), address, p, data.Length), "rcfw_table_write");
+        }
+    }
+
     /// <inheritdoc />
     public void Dispose()
     {

@@ -25,6 +25,7 @@ struct rcfw_port {
     uint64_t tx_start_ns; /* last transmission window (RS-485 DE high) */
     uint64_t tx_end_ns;
     int32_t cut_remaining; /* < 0: disarmed */
+    uint8_t tx_broken;     /* 1: the RS-485 driver puts nothing on the line (a broken transmit line) */
     uint8_t echo[RCFW_TX_MAX]; /* last transmission, heard by the other modules (half-duplex bus) */
     uint16_t echo_len;         /* 0: already heard */
     uint64_t echo_start_ns;
@@ -79,8 +80,8 @@ static uint64_t byte_ns(uint32_t bps) { return 10ull * 1000000000ull / bps; }
 void rcfw_hal_uart_send(struct rcfw_port *p, const uint8_t *buf, uint16_t len, uint32_t delay_us)
 {
     rcfw_bus *bus = p->bus;
-    if (!p->powered || p->uart_bps != bus->bps || len == 0) {
-        return;
+    if (!p->powered || p->tx_broken || p->uart_bps != bus->bps || len == 0) {
+        return; /* a broken transmit line: the module sends, nobody hears it (neither the host nor the others) */
     }
     uint64_t bn = byte_ns(bus->bps);
     uint64_t start = p->rx_end_ns + (uint64_t)delay_us * 1000u;
@@ -462,6 +463,25 @@ int32_t rcfw_peek_table(const rcfw_bus *bus, int32_t module, uint16_t addr, uint
     }
     memcpy(buf, p->mod.ct + addr, (size_t)len);
     return len;
+}
+
+int32_t rcfw_set_tx_broken(rcfw_bus *bus, int32_t module, int32_t broken)
+{
+    struct rcfw_port *p = port_of(bus, module);
+    if (!p) {
+        return RCFW_HOST_EARG;
+    }
+    p->tx_broken = broken != 0 ? 1u : 0u;
+    return RCFW_HOST_OK;
+}
+
+int32_t rcfw_table_write(rcfw_bus *bus, int32_t module, uint16_t addr, const uint8_t *buf, int32_t len)
+{
+    struct rcfw_port *p = port_of(bus, module);
+    if (!p || len <= 0 || len > 0xFFFF || !buf) {
+        return RCFW_HOST_EARG;
+    }
+    return rcfw_module_write(&p->mod, addr, buf, (uint16_t)len);
 }
 
 int32_t rcfw_is_powered(const rcfw_bus *bus, int32_t module)

@@ -116,6 +116,15 @@ RCFW_HOST_API int32_t rcfw_get_position(const rcfw_bus *bus, int32_t module, int
  * bypasses the bus). Returns len or RCFW_HOST_EARG. */
 RCFW_HOST_API int32_t rcfw_peek_table(const rcfw_bus *bus, int32_t module, uint16_t addr,
                                       uint8_t *buf, int32_t len);
+/* Breaks (1) or mends (0) the module's transmit line: from now on nothing it sends reaches the bus (the host
+ * hears no reply, the modules after it in a chained SYNC/BULK READ wait for it in vain); it still hears
+ * everything. Returns RCFW_HOST_OK or RCFW_HOST_EARG. */
+RCFW_HOST_API int32_t rcfw_set_tx_broken(rcfw_bus *bus, int32_t module, int32_t broken);
+/* Writes len bytes into the module's control table at addr through the module's own write path (checked and
+ * applied as a WRITE frame's data would be, without a frame on the bus: a write that did not come from the
+ * host under test). Returns the protocol error code (0 = applied) or RCFW_HOST_EARG. */
+RCFW_HOST_API int32_t rcfw_table_write(rcfw_bus *bus, int32_t module, uint16_t addr, const uint8_t *buf,
+                                       int32_t len);
 /* 1 if the module is powered, 0 if it is off (after a FRAM cut). */
 RCFW_HOST_API int32_t rcfw_is_powered(const rcfw_bus *bus, int32_t module);
 

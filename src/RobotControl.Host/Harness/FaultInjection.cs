@@ -8,7 +8,8 @@ namespace RobotControl.Host.Harness;
 /// the safety faults (<see cref="TimedFaultKind"/>): <c>stall=100ms@5s</c> (the host stops for that long),
 /// <c>stuck=right.elbow@5s</c> (locked rotor), <c>current=right.elbow@5s</c> (current spike at the sensor),
 /// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint), <c>pot=right.elbow@5s</c> (the joint pot fails), <c>silent=right.forearm@5s</c> (the module's
-/// replies stop), <c>jump=touch_right:50mm@5s</c> (a simulated Touch's reading jumps 50 mm along x in one sample and
+/// transmit line breaks: its replies stop), <c>watchdog=right.forearm@5s</c> (the module's bus watchdog is switched off
+/// by a write that did not come from the host), <c>jump=touch_right:50mm@5s</c> (a simulated Touch's reading jumps 50 mm along x in one sample and
 /// stays offset) and <c>stale=touch_right@5s</c> (a simulated Touch stops giving new readings: the master timeout).
 /// </summary>
 /// <param name="BitErrorRate">Probability that a bit on the wire flips.</param>
@@ -20,7 +21,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
     public static FaultInjection None { get; } = new(0, []);
 
     /// <summary>The syntax, for <c>--help</c> and messages.</summary>
-    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, pot=<arm.motor>@<time>, nan=<plug-in>@<time>, jump=<touch>:<distance>mm@<time>, stale=<touch>@<time>";
+    public const string Syntax = "ber=<rate>, reset=<module>@<time>, silent=<module>@<time>, watchdog=<module>@<time>, stall=<duration>@<time>, stuck=<arm.motor>@<time>, current=<arm.motor>@<time>, pot=<arm.motor>@<time>, nan=<plug-in>@<time>, jump=<touch>:<distance>mm@<time>, stale=<touch>@<time>";
 
     /// <summary>The safety faults (empty when none).</summary>
     public IReadOnlyList<TimedFault> TimedFaults => Timed ?? [];
@@ -64,6 +65,7 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
                     resets.Add(new ModuleReset(value[..at], RunDuration.Parse(value[(at + 1)..])));
                     break;
                 case "silent":
+                case "watchdog":
                 case "stall":
                 case "stuck":
                 case "current":
@@ -92,10 +94,10 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
         var at = value.LastIndexOf('@');
         if (at <= 0)
         {
-            throw new FormatException($"--inject '{part}': expected {key}=<{key switch { "stall" => "duration", "nan" => "plug-in", "silent" => "arm.location or id", "jump" => "touch>:<distance>mm", "stale" => "touch", _ => "arm.motor" }}>@<time>, e.g. {key}={key switch { "stall" => "100ms", "nan" => "ik_right", "silent" => "right.forearm", "jump" => "touch_right:50mm", "stale" => "touch_right", _ => "right.elbow" }}@5s");
+            throw new FormatException($"--inject '{part}': expected {key}=<{key switch { "stall" => "duration", "nan" => "plug-in", "silent" or "watchdog" => "arm.location or id", "jump" => "touch>:<distance>mm", "stale" => "touch", _ => "arm.motor" }}>@<time>, e.g. {key}={key switch { "stall" => "100ms", "nan" => "ik_right", "silent" or "watchdog" => "right.forearm", "jump" => "touch_right:50mm", "stale" => "touch_right", _ => "right.elbow" }}@5s");
         }
 
-        var kind = key switch { "silent" => TimedFaultKind.Silent, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, "pot" => TimedFaultKind.Pot, "jump" => TimedFaultKind.Jump, "stale" => TimedFaultKind.Stale, _ => TimedFaultKind.Nan };
+        var kind = key switch { "silent" => TimedFaultKind.Silent, "watchdog" => TimedFaultKind.Watchdog, "stall" => TimedFaultKind.Stall, "stuck" => TimedFaultKind.Stuck, "current" => TimedFaultKind.Current, "pot" => TimedFaultKind.Pot, "jump" => TimedFaultKind.Jump, "stale" => TimedFaultKind.Stale, _ => TimedFaultKind.Nan };
         var target = value[..at];
         if (kind == TimedFaultKind.Jump)
         {
@@ -123,8 +125,11 @@ public sealed record FaultInjection(double BitErrorRate, IReadOnlyList<ModuleRes
 /// <summary>The safety faults <c>--inject</c> knows.</summary>
 public enum TimedFaultKind
 {
-    /// <summary>A module's replies stop reaching the host (it still hears the host).</summary>
+    /// <summary>A module's transmit line breaks: its replies stop reaching the host (it still hears the host).</summary>
     Silent,
+
+    /// <summary>A module's bus watchdog is switched off (<c>bus_watchdog</c> 0) by a write that did not come from the host.</summary>
+    Watchdog,
 
     /// <summary>The host stops (no bus traffic, no ticks) for a duration.</summary>
     Stall,

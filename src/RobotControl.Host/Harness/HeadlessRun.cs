@@ -44,9 +44,8 @@ public static class HeadlessRun
     private static RunReport RunVirtual(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
     {
         TrackingMeter? meter = null;
-        SilentModuleLink? silentLink = null;
         using var session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = SilenceModules(options, hooks?.WrapLink, l => silentLink = l), Observer = (node, port) => Meter(node, port, out meter) },
+            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
             catalog);
         var bus = session.Robot;
         var sim = session.Simulation!;
@@ -64,11 +63,6 @@ public static class HeadlessRun
             sim.WireFaults = new WireFaults { BitErrorRate = options.Inject.BitErrorRate };
         }
 
-        foreach (var f in options.Inject.TimedFaults.Where(f => f.Kind == TimedFaultKind.Silent))
-        {
-            silentLink!.Silence(ResolveModule(session.Graph.Robot!, f.Target), begin + (long)(f.At.TotalSeconds * clock.TimestampFrequency));
-        }
-
         var safetyFaults = new SafetyFaultSchedule(options.Inject.TimedFaults, sim, bus, session.Graph, begin, clock.TimestampFrequency);
         var around = hooks?.AroundTick;
         PressPedal(session, begin);
@@ -77,6 +71,7 @@ public static class HeadlessRun
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
         var reported = 0L;
         var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
+        using var operatorStop = OperatorStop(options, session.Supervisor);
         session.RunVirtual(
             ticks,
             () =>
@@ -110,21 +105,9 @@ public static class HeadlessRun
         return Finish(stopper, check, loop, meter!, elapsed, session, faults);
     }
 
-    /// <summary>The link wrapper for <c>silent=</c> faults (outermost: a measuring wrapper sees what the host sees), or <paramref name="wrap"/> alone without one.</summary>
-    private static Func<IByteLink, TimeProvider, IByteLink>? SilenceModules(RunOptions options, Func<IByteLink, TimeProvider, IByteLink>? wrap, Action<SilentModuleLink> made)
-    {
-        if (!options.Inject.TimedFaults.Any(f => f.Kind == TimedFaultKind.Silent))
-        {
-            return wrap;
-        }
-
-        return (link, clock) =>
-        {
-            var silent = new SilentModuleLink(wrap?.Invoke(link, clock) ?? link, clock);
-            made(silent);
-            return silent;
-        };
-    }
+    /// <summary>The command line's E-STOP (<see cref="RunOptions.EmergencyStop"/>) goes to the supervisor, as any operator E-STOP.</summary>
+    private static CancellationTokenRegistration OperatorStop(RunOptions options, SafetySupervisor supervisor) =>
+        options.EmergencyStop.Register(() => supervisor.RequestEmergencyStop("cli", "E-STOP from the command line"));
 
     /// <summary>
     /// Without a pedal wired to the robot node (the shipped graphs), the harness is the operator and holds the pedal
@@ -159,6 +142,7 @@ public static class HeadlessRun
         var faults = new List<FaultEntry>();
         DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
         var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
+        using var operatorStop = OperatorStop(options, session.Supervisor);
         var nextProgress = options.ProgressInterval;
         StopCheck check;
         var threads = options.Threads ?? RealtimeThreads.Default;
@@ -255,7 +239,7 @@ public static class HeadlessRun
         }
     }
 
-    private static byte ResolveModule(RobotDefinition robot, string module)
+    internal static byte ResolveModule(RobotDefinition robot, string module)
     {
         if (byte.TryParse(module, NumberStyles.None, CultureInfo.InvariantCulture, out var id) && robot.Modules.ById(id) is not null)
         {

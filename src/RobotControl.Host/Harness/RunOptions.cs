@@ -24,6 +24,13 @@ public sealed record RunOptions
     /// <summary>Cancelled to stop the run early (Ctrl+C, SIGTERM): the report is then marked interrupted.</summary>
     public CancellationToken Stop { get; init; }
 
+    /// <summary>
+    /// Cancelled when an operator asks for an emergency stop from outside the run (the command line's E-STOP key): the
+    /// supervisor trips <c>operator</c> in the next bus cycle (hold, E_STOP) and the run goes on, holding, as after any
+    /// hold trip. The source in the report is <c>cli</c>.
+    /// </summary>
+    public CancellationToken EmergencyStop { get; init; }
+
     /// <summary>Scheduling of the real-time threads (priority, CPU); null: normal.</summary>
     public Realtime.RealtimeThreads? Threads { get; init; }
 

@@ -1,3 +1,4 @@
+using RobotControl.Bus.Protocol;
 using RobotControl.Plugins.Touch;
 using RobotControl.Plugins.Touch.Simulation;
 using RobotControl.Robot.Bus;
@@ -19,6 +20,9 @@ internal sealed class SafetyFaultSchedule
     /// <summary>A current spike: the sensor reads this many times the motor's limit more.</summary>
     private const double CurrentSpikeLimits = 2;
 
+    /// <summary>Where the modules keep their bus watchdog period.</summary>
+    private static readonly ushort WatchdogAddress = ControlTable.Firmware["bus_watchdog"].At(0);
+
     private readonly Pending[] _pending;
     private readonly VirtualRobot _sim;
     private readonly BusRobot _robot;
@@ -33,13 +37,13 @@ internal sealed class SafetyFaultSchedule
         _robot = robot;
         _nan = new double[robot.Definition.JointCount];
         Array.Fill(_nan, double.NaN);
-        _pending = [.. faults.Where(f => f.Kind != TimedFaultKind.Silent).Select(f => Resolve(f, sim, graph, begin + (long)(f.At.TotalSeconds * frequency))).OrderBy(p => p.At)];
+        _pending = [.. faults.Select(f => Resolve(f, sim, graph, begin + (long)(f.At.TotalSeconds * frequency))).OrderBy(p => p.At)];
     }
 
     /// <summary>Faults not applied yet.</summary>
     public int Remaining => _pending.Length - _next;
 
-    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (stall, stuck, current, pot, jump, stale).</summary>
+    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (all but NaN).</summary>
     public void BeforeTick(long timestamp)
     {
         while (_next < _pending.Length && _pending[_next].At <= timestamp && _pending[_next].Fault.Kind != TimedFaultKind.Nan)
@@ -47,6 +51,12 @@ internal sealed class SafetyFaultSchedule
             var p = _pending[_next++];
             switch (p.Fault.Kind)
             {
+                case TimedFaultKind.Silent:
+                    _sim.BreakTransmitLine(p.Module);
+                    break;
+                case TimedFaultKind.Watchdog:
+                    _ = _sim.WriteTable(p.Module, WatchdogAddress, [0, 0]); // bus_watchdog 0: off
+                    break;
                 case TimedFaultKind.Stall:
                     _sim.Advance(p.Fault.Duration); // the bus clock moves on, nobody talks to the modules
                     break;
@@ -94,6 +104,9 @@ internal sealed class SafetyFaultSchedule
                 var touch = touches.FirstOrDefault(t => t.Name == f.Target)?.Backend as SimulatedTouchBackend
                     ?? throw new FormatException($"--inject '{f}': no simulated Touch '{f.Target}' in the graph (simulated Touch instances: {string.Join(", ", touches.Where(t => t.Backend is SimulatedTouchBackend).Select(t => t.Name))})");
                 return new Pending(f, at, null, -1, touch);
+            case TimedFaultKind.Silent:
+            case TimedFaultKind.Watchdog:
+                return new Pending(f, at, null, -1, Module: HeadlessRun.ResolveModule(graph.Robot!, f.Target));
             case TimedFaultKind.Nan:
                 var prefix = $"{RobotNode.InstanceName}.";
                 var wire = graph.Document.Wires.FirstOrDefault(w => w.From.StartsWith(f.Target + ".", StringComparison.Ordinal) && w.To.StartsWith(prefix, StringComparison.Ordinal))
@@ -106,5 +119,5 @@ internal sealed class SafetyFaultSchedule
         }
     }
 
-    private sealed record Pending(TimedFault Fault, long At, VirtualAxis? Axis, int Arm, SimulatedTouchBackend? Touch = null);
+    private sealed record Pending(TimedFault Fault, long At, VirtualAxis? Axis, int Arm, SimulatedTouchBackend? Touch = null, byte Module = 0);
 }

@@ -29,6 +29,9 @@ public enum SafetyCheck
 
     /// <summary>The input device data driving an arm is older than the limit (the master timeout): back to PEDAL_UP when its safe state is hold.</summary>
     MasterTimeout,
+
+    /// <summary>While the motors are on, a module's bus watchdog (read back) is off or not the robot file's period.</summary>
+    WatchdogUnarmed,
 }
 
 /// <summary>What the robot does after a trip.</summary>
@@ -56,6 +59,7 @@ public static class SafetyNames
         SafetyCheck.ModuleFault => "module_fault",
         SafetyCheck.Operator => "operator",
         SafetyCheck.MasterTimeout => "master_timeout",
+        SafetyCheck.WatchdogUnarmed => "watchdog_unarmed",
         _ => check.ToString(),
     };
 

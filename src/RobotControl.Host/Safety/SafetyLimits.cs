@@ -33,6 +33,9 @@ public sealed record SafetyLimits
     /// <summary>How old the input device data driving an arm may be while teleoperation drives it, ms (default 50: the master timeout).</summary>
     public double MasterTimeoutMs { get; init; } = 50;
 
+    /// <summary>Longest bus watchdog period the robot file's <c>modules.watchdog_ms</c> may set, ms (default 30, as the dVRK's hardware watchdog).</summary>
+    public double BusWatchdogMaxMs { get; init; } = 30;
+
     /// <summary>Per-motor thresholds that override the robot-wide ones, by motor name (<c>arm.motor</c>, e.g. <c>right.elbow</c>).</summary>
     public IReadOnlyDictionary<string, MotorSafetyLimits> Motors { get; init; } = new Dictionary<string, MotorSafetyLimits>();
 
@@ -42,7 +45,7 @@ public sealed record SafetyLimits
     /// <summary>The pot/encoder distance limit of motor <paramref name="motor"/> (its own, else <see cref="PotDistanceRad"/>).</summary>
     public double PotDistanceRadOf(string motor) => Motors.TryGetValue(motor, out var m) && m.PotDistanceRad is { } v ? v : PotDistanceRad;
 
-    /// <summary>Safe state per check (defaults: hold for soft trips, the master timeout's hold going back to PEDAL_UP instead of E_STOP; torque off for a silent module, over-current, a pot/encoder mismatch and module faults).</summary>
+    /// <summary>Safe state per check (defaults: hold for soft trips, the master timeout's hold going back to PEDAL_UP instead of E_STOP; torque off for a silent module, over-current, a pot/encoder mismatch, module faults and an unarmed bus watchdog).</summary>
     public IReadOnlyDictionary<SafetyCheck, SafeState> SafeStates { get; init; } = DefaultSafeStates;
 
     /// <summary>The defaults of <see cref="SafeStates"/>.</summary>
@@ -57,6 +60,7 @@ public sealed record SafetyLimits
         [SafetyCheck.ModuleFault] = SafeState.TorqueOff,
         [SafetyCheck.Operator] = SafeState.Hold,
         [SafetyCheck.MasterTimeout] = SafeState.Hold,
+        [SafetyCheck.WatchdogUnarmed] = SafeState.TorqueOff,
     };
 
     /// <summary>The safe state of <paramref name="check"/>.</summary>

@@ -8,7 +8,7 @@ namespace RobotControl.Host.Safety;
 /// <code>
 /// "safety": { "tracking_error_rad": 0.35, "tracking_error_ms": 50, "current_limit_fraction": 0.95,
 ///             "over_current_ms": 50, "pot_distance_rad": 0.087, "pot_mismatch_ms": 10,
-///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10, "master_timeout_ms": 50,
+///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10, "master_timeout_ms": 50, "bus_watchdog_max_ms": 30,
 ///             "safe_state": { "tracking_error": "hold", "over_current": "torque_off" },
 ///             "motors": { "right.elbow": { "tracking_error_rad": 0.2, "pot_distance_rad": 0.1 } } }
 /// </code>
@@ -16,7 +16,7 @@ namespace RobotControl.Host.Safety;
 public static class SafetySection
 {
     private static readonly string[] Fields =
-        ["tracking_error_rad", "tracking_error_ms", "current_limit_fraction", "over_current_ms", "pot_distance_rad", "pot_mismatch_ms", "module_silent_ms", "deadline_misses_in_a_row", "master_timeout_ms", "safe_state", "motors"];
+        ["tracking_error_rad", "tracking_error_ms", "current_limit_fraction", "over_current_ms", "pot_distance_rad", "pot_mismatch_ms", "module_silent_ms", "deadline_misses_in_a_row", "master_timeout_ms", "bus_watchdog_max_ms", "safe_state", "motors"];
 
     private static readonly string[] MotorFields = ["tracking_error_rad", "pot_distance_rad"];
 
@@ -63,9 +63,29 @@ public static class SafetySection
             ModuleSilentMs = Number(section, "module_silent_ms", d.ModuleSilentMs, 0, 10_000, file),
             DeadlineMissesInARow = (int)Number(section, "deadline_misses_in_a_row", d.DeadlineMissesInARow, 1, 100_000, file, integer: true),
             MasterTimeoutMs = Number(section, "master_timeout_ms", d.MasterTimeoutMs, 1, 10_000, file),
+            BusWatchdogMaxMs = Number(section, "bus_watchdog_max_ms", d.BusWatchdogMaxMs, 1, 60_000, file),
             SafeStates = SafeStates(section, file),
             Motors = PerMotor(section, file, motors),
         };
+    }
+
+    /// <summary>
+    /// The robot file's bus watchdog period (<c>modules.watchdog_ms</c>) must be on and no longer than
+    /// <see cref="SafetyLimits.BusWatchdogMaxMs"/>: the modules stop their motors that long after the host stops.
+    /// </summary>
+    /// <exception cref="FormatException">It is 0 (off) or too long (one line naming the file and both fields).</exception>
+    public static void CheckWatchdog(SafetyLimits limits, int watchdogMs, string file)
+    {
+        ArgumentNullException.ThrowIfNull(limits);
+        if (watchdogMs <= 0)
+        {
+            throw new FormatException($"{file}: modules.watchdog_ms: {watchdogMs} switches the modules' bus watchdogs off; the safety supervisor needs 1 to {limits.BusWatchdogMaxMs:0.###} ms (safety.bus_watchdog_max_ms)");
+        }
+
+        if (watchdogMs > limits.BusWatchdogMaxMs)
+        {
+            throw new FormatException($"{file}: modules.watchdog_ms: {watchdogMs} ms is longer than safety.bus_watchdog_max_ms ({limits.BusWatchdogMaxMs:0.###} ms): a module would drive on for {watchdogMs} ms after the host stops");
+        }
     }
 
     private static Dictionary<string, MotorSafetyLimits> PerMotor(JsonElement section, string file, IReadOnlyCollection<string>? motors)

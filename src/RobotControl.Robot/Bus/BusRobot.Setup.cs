@@ -293,7 +293,7 @@ public sealed partial class BusRobot
             (module, offset) = (module + members.Length, offset + (members.Length * length));
             return group;
         }).ToArray();
-        _statusData = new byte[_ids.Length * 2];
+        _statusData = new byte[_ids.Length * StatusPollLength];
         _statusReplies = new Reply[_ids.Length];
         ResizePotBuffers();
     }

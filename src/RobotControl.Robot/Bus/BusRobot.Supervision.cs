@@ -11,6 +11,9 @@ namespace RobotControl.Robot.Bus;
 /// <summary>Module supervision: status poll, resets, watchdog, faults cleared, modules found again.</summary>
 public sealed partial class BusRobot
 {
+    /// <summary>Bytes the status poll reads per module: <c>hardware_error_status</c>, <c>reset_cause</c>, <c>bus_watchdog</c> (u16).</summary>
+    private const int StatusPollLength = 4;
+
     private void PollStatus()
     {
         if (_ids.Length == 0)
@@ -18,7 +21,7 @@ public sealed partial class BusRobot
             return;
         }
 
-        _client.SyncRead(_statusAddress, 2, _ids, _statusData, _statusReplies);
+        _client.SyncRead(_statusAddress, StatusPollLength, _ids, _statusData, _statusReplies);
         for (var i = 0; i < _active.Length; i++)
         {
             if (_statusReplies[i].Outcome != ReplyOutcome.Ok)
@@ -27,9 +30,11 @@ public sealed partial class BusRobot
             }
 
             var c = _active[i];
-            var status = (HardwareErrors)_statusData[2 * i];
-            var cause = _statusData[(2 * i) + 1];
+            var at = StatusPollLength * i;
+            var status = (HardwareErrors)_statusData[at];
+            var cause = _statusData[at + 1];
             c.HardwareErrorStatus = status.Value;
+            c.BusWatchdogMs = BinaryPrimitives.ReadUInt16LittleEndian(_statusData.AsSpan(at + 2, 2)); // before a reset re-arms it
             if (cause != 0)
             {
                 HandleReset(c, cause, status);
@@ -96,6 +101,7 @@ public sealed partial class BusRobot
         // Torque first, then the watchdog: a stall between the two writes must not trip a watchdog that refuses the torque.
         var t = _client.Write(c.Id, _torqueAddress, torque);
         var w = _client.Write(c.Id, _watchdogAddress, watchdog);
+        c.BusWatchdogMs = -1; // known again when the next status poll reads it back
         if (!w.Succeeded || !t.Succeeded)
         {
             Span<byte> status = stackalloc byte[2];

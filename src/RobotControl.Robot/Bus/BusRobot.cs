@@ -162,9 +162,9 @@ public sealed partial class BusRobot : IRobotPort, IBusCycle, IDisposable
         _watchdogAddress = _table["bus_watchdog"].At(0);
         _torqueAddress = _table["torque_enable"].At(0);
         _resetCauses = _table.Codes("reset_cause");
-        if (_resetCauseAddress != _statusAddress + 1)
+        if (_resetCauseAddress != _statusAddress + 1 || _watchdogAddress != _statusAddress + 2 || _table["bus_watchdog"].Size != StatusPollLength - 2)
         {
-            throw new InvalidOperationException("the control table no longer keeps reset_cause right after hardware_error_status; update the status poll");
+            throw new InvalidOperationException("the control table no longer keeps reset_cause and bus_watchdog (2 bytes) right after hardware_error_status; update the status poll");
         }
 
         _state = new RobotStateMachine(_time);

@@ -38,6 +38,12 @@ public sealed class RobotController
     /// <summary>Latched hardware error bits last read (see the control table's hardware_error_status).</summary>
     public byte HardwareErrorStatus { get; internal set; }
 
+    /// <summary>
+    /// Its bus watchdog period (<c>bus_watchdog</c>, ms; 0: off) as last read back by the status poll, or -1 when not
+    /// known: before the first poll, and from each time the host arms or disarms it until the next poll reads it back.
+    /// </summary>
+    public int BusWatchdogMs { get; internal set; } = -1;
+
     /// <summary>Times this module was seen to reset since the robot was opened.</summary>
     public int Resets { get; internal set; }
 

@@ -66,6 +66,12 @@ internal static unsafe partial class FirmwareHost
     [LibraryImport(Library, EntryPoint = "rcfw_reset")]
     public static partial int Reset(nint bus, int module, byte cause);
 
+    [LibraryImport(Library, EntryPoint = "rcfw_set_tx_broken")]
+    public static partial int SetTransmitBroken(nint bus, int module, int broken);
+
+    [LibraryImport(Library, EntryPoint = "rcfw_table_write")]
+    public static partial int TableWrite(nint bus, int module, ushort address, byte* buffer, int length);
+
     /// <summary>Throws when a status-returning call failed.</summary>
     public static int Check(int status, string what) => status >= 0
         ? status

@@ -43,6 +43,29 @@ public sealed class RunLevelTests
     }
 
     [Fact]
+    public void An_emergency_stop_asked_for_from_another_thread_is_taken_in_the_next_cycle_and_holds()
+    {
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        var supervisor = session.Supervisor;
+        supervisor.PedalDown("pedal");
+        session.RunVirtual(100);
+        var asker = new Thread(() => supervisor.RequestEmergencyStop("cli", "E-STOP key on the command line"));
+        asker.Start();
+        asker.Join();
+        Assert.Equal(RunLevel.PedalDown, supervisor.Level); // nothing happens off the bus thread
+        session.RunVirtual(session.Loop.TickCount + 3); // the next bus cycle: one lasts 1 to 2.6 ms of the 1 ms ticks
+        Assert.Equal(RunLevel.EStop, supervisor.Level);
+        var stop = supervisor.History[^1];
+        Assert.Equal(("cli", "E-STOP key on the command line"), (stop.Source, stop.Reason));
+        var trip = Assert.Single(supervisor.Trips);
+        Assert.Equal((SafetyCheck.Operator, SafeState.Hold), (trip.Check, trip.Action));
+        Assert.Equal(RobotState.Enabled, session.Robot.State); // hold: motors on, goals frozen
+        session.RunVirtual(session.Loop.TickCount + 100);
+        Assert.Single(supervisor.Trips); // taken once
+        Assert.Throws<ArgumentException>(() => supervisor.RequestEmergencyStop(" ", "x"));
+    }
+
+    [Fact]
     public void Nothing_moves_at_pedal_up_although_the_graph_commands_motion()
     {
         var goal = RobotControl.Bus.Protocol.ControlTable.Firmware["goal_position"];

@@ -64,4 +64,22 @@ public sealed class SafetyConfigTests
         Assert.Contains("expected stuck=<arm.motor>@<time>", Assert.Throws<FormatException>(() => FaultInjection.Parse("stuck=right.elbow")).Message, StringComparison.Ordinal);
         Assert.Contains("unknown fault", Assert.Throws<FormatException>(() => FaultInjection.Parse("melt=right.elbow@1s")).Message, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public void The_bus_watchdog_must_be_on_and_no_longer_than_its_safety_limit()
+    {
+        var limits = new SafetyLimits();
+        Assert.Equal(30, limits.BusWatchdogMaxMs);
+        SafetySection.CheckWatchdog(limits, 30, "r.json");
+        Assert.Equal(
+            "r.json: modules.watchdog_ms: 0 switches the modules' bus watchdogs off; the safety supervisor needs 1 to 30 ms (safety.bus_watchdog_max_ms)",
+            Assert.Throws<FormatException>(() => SafetySection.CheckWatchdog(limits, 0, "r.json")).Message);
+        Assert.Equal(
+            "r.json: modules.watchdog_ms: 100 ms is longer than safety.bus_watchdog_max_ms (30 ms): a module would drive on for 100 ms after the host stops",
+            Assert.Throws<FormatException>(() => SafetySection.CheckWatchdog(limits, 100, "r.json")).Message);
+        using var relaxed = System.Text.Json.JsonDocument.Parse("{ \"bus_watchdog_max_ms\": 100 }");
+        SafetySection.CheckWatchdog(SafetySection.Parse(relaxed.RootElement, "r.json"), 100, "r.json");
+        using var bad = System.Text.Json.JsonDocument.Parse("{ \"bus_watchdog_max_ms\": 0 }");
+        Assert.Equal("r.json: safety.bus_watchdog_max_ms: expected a number from 1 to 60000, got 0", Assert.Throws<FormatException>(() => SafetySection.Parse(bad.RootElement, "r.json")).Message);
+    }
 }

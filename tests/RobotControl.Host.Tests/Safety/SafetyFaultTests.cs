@@ -32,6 +32,22 @@ public sealed class SafetyFaultTests
     }
 
     [Fact]
+    public void A_module_whose_bus_watchdog_is_switched_off_trips_watchdog_unarmed_within_a_status_poll_and_turns_the_torque_off()
+    {
+        var run = SafetyRun.Of("watchdog=right.forearm@1s", 1.3);
+        var trip = run.Trip(SafetyCheck.WatchdogUnarmed);
+        Assert.Equal("right.forearm", trip.Joint);
+        Assert.Equal(0, trip.Measured); // read back from the module: off
+        Assert.Equal(30, trip.Limit); // the robot file's modules.watchdog_ms
+        // the status poll reads every module's bus_watchdog every 8 bus cycles (1 to 2.6 ms each)
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0, 0.025);
+        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.Single(run.Safety.Trips);
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
+        AssertCommon(run, "watchdog_unarmed");
+    }
+
+    [Fact]
     public void A_stuck_joint_trips_within_300_ms_and_turns_the_torque_off()
     {
         var run = SafetyRun.Of("stuck=right.elbow@1s", 1.5);
@@ -120,10 +136,10 @@ public sealed class SafetyFaultTests
         Assert.True(run.LastForceS > 19.9, $"the haptic handles rendered no force after {run.LastForceS} s of teleoperation");
         Assert.Equal(0, run.Report.DeadlineMisses);
         // The main job's figures with the supervisor in the loop: the same as `robotctl run graphs/teleop-lb.json
-        // --virtual --duration 20s` without it (0.6806 / 1.575 mm since the cycle polls the joint pots every 16 cycles,
-        // 0.6755 / 1.528 mm before).
-        Assert.Equal(0.6806, Math.Round(run.Report.TrackingRmsMm, 4));
-        Assert.Equal(1.575, Math.Round(run.Report.TrackingMaxMm, 3));
+        // --virtual --duration 20s` without it (0.6834 / 1.548 mm since the status poll also reads back each module's
+        // bus watchdog, 0.6806 / 1.575 mm before; 0.6755 / 1.528 mm before the cycle polled the joint pots).
+        Assert.Equal(0.6834, Math.Round(run.Report.TrackingRmsMm, 4));
+        Assert.Equal(1.548, Math.Round(run.Report.TrackingMaxMm, 3));
         Assert.InRange(run.WorstStepOverCap(), 0, 1);
     }
 

@@ -105,7 +105,13 @@ internal sealed class RunCommand : ICliCommand
         output.WriteLine(string.Create(c, $"run {Path.GetFileName(graphPath)}: {(isVirtual ? "virtual robot (firmware in the loop), virtual clock" : "real time")}, {options.Duration.TotalSeconds:0.###} s, faults: {options.Inject}"));
         RunReport result;
         using var signals = new StopSignals(error);
-        options = options with { Stop = signals.Token };
+        using var keys = ReferenceEquals(output, Console.Out) ? OperatorKeys.FromConsole(error) : null; // not when run in-process (tests)
+        options = options with { Stop = signals.Token, EmergencyStop = keys?.EmergencyStop ?? default };
+        if (keys is not null)
+        {
+            output.WriteLine(OperatorKeys.Help);
+        }
+
         try
         {
             var interactive = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected && AnsiConsole.Profile.Capabilities.Interactive;

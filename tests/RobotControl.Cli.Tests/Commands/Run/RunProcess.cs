@@ -14,7 +14,7 @@ internal sealed class RunProcess : IDisposable
 
     public RunProcess(params string[] args)
     {
-        var start = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        var start = new ProcessStartInfo("dotnet") { RedirectStandardInput = true, RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
         start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "robotctl.dll"));
         foreach (var a in args)
         {
@@ -69,6 +69,13 @@ internal sealed class RunProcess : IDisposable
         }
 
         return Output;
+    }
+
+    /// <summary>Writes <paramref name="line"/> to the process's standard input (an operator typing it).</summary>
+    public void Type(string line)
+    {
+        _process.StandardInput.WriteLine(line);
+        _process.StandardInput.Flush();
     }
 
     /// <summary>Sends a signal (e.g. INT, TERM) to the process.</summary>

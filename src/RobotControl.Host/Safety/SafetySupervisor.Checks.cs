@@ -1,0 +1,171 @@
+using System.Globalization;
+using RobotControl.Robot.Bus;
+using RobotControl.Robot.Control;
+using RobotControl.Robot.States;
+
+namespace RobotControl.Host.Safety;
+
+/// <summary>The per-cycle checks, run inside the bus cycle between read and write; allocation-free while nothing trips.</summary>
+public sealed partial class SafetySupervisor
+{
+    /// <summary>The per-cycle checks (the robot's <see cref="BusRobot.AfterUpdate"/>).</summary>
+    private void CheckCycle()
+    {
+        FollowOperator();
+        if (Level == RunLevel.Init)
+        {
+            _lastCycle = 0;
+            return; // motors off and nothing commanded: the checks start with homing
+        }
+
+        var now = _time.GetTimestamp();
+        var gap = _lastCycle == 0 ? 0 : now - _lastCycle;
+        // Cycles are timed only while the motors hold or follow teleoperation (PEDAL_UP, PEDAL_DOWN): set-up and
+        // homing run the bus at their own pace (first calls, homing moves), with the motors off or firmware-driven.
+        _lastCycle = Level is RunLevel.PedalUp or RunLevel.PedalDown ? now : 0;
+        if (gap > _stallTicks)
+        {
+            Trip(SafetyCheck.DeadlineMiss, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
+        }
+
+        CheckModules(now);
+        if (_robot.State == RobotState.Enabled && Level is RunLevel.PedalUp or RunLevel.PedalDown)
+        {
+            CheckWatchdogs(now);
+        }
+        if (_robot.State == RobotState.Fault)
+        {
+            Trip(SafetyCheck.ModuleFault, string.Empty, (double)_robot.Faults, 0, "fault flags", now);
+        }
+
+        if ((_robot.Faults & RobotFaults.SetpointRejected) != 0)
+        {
+            Trip(SafetyCheck.NonFinite, "setpoint", double.NaN, 0, "rad", now);
+        }
+
+        if (Level == RunLevel.PedalDown && StaleArm() is { } stale)
+        {
+            MasterTimeout(stale.Arm, stale.AgeMs, now);
+        }
+
+        var driven = _robot.State == RobotState.Enabled;
+        var homed = Level is RunLevel.PedalUp or RunLevel.PedalDown;
+        for (var i = 0; i < _motors.Length; i++)
+        {
+            CheckMotor(i, driven, homed, now);
+        }
+    }
+
+    /// <summary>The first arm whose input device data is older than the master timeout, with its age (ms), or null.</summary>
+    private (int Arm, double AgeMs)? StaleArm()
+    {
+        for (var a = 0; a < _arms; a++)
+        {
+            var age = _robot.InputAgeMs(a);
+            if (!(age <= Limits.MasterTimeoutMs))
+            {
+                return (a, age);
+            }
+        }
+
+        return null;
+    }
+
+    /// <summary>
+    /// The master timeout: with the safe state hold, the trip is recorded and the run level goes back to PEDAL_UP (the
+    /// arms hold, teleoperation is ignored); with torque off, it is a trip like any other (E_STOP).
+    /// </summary>
+    private void MasterTimeout(int arm, double age, long now)
+    {
+        var joint = _robot.Definition.Arms[arm].Name;
+        if (Limits.SafeStateOf(SafetyCheck.MasterTimeout) == SafeState.TorqueOff)
+        {
+            Trip(SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", now);
+            return;
+        }
+
+        lock (_tripGate)
+        {
+            if (!_tripped[(int)SafetyCheck.MasterTimeout])
+            {
+                _tripped[(int)SafetyCheck.MasterTimeout] = true;
+                _trips.Add(new SafetyTrip(now, SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", SafeState.Hold));
+            }
+        }
+
+        PedalUp(TripSource, string.Create(CultureInfo.InvariantCulture, $"master_timeout {joint}: input data {age:0.#} ms old (limit {Limits.MasterTimeoutMs:0.#}): hold"));
+    }
+
+    private void CheckModules(long now)
+    {
+        for (var i = 0; i < _controllers.Length; i++)
+        {
+            var c = _controllers[i];
+            if (c.MissedReplies == 0 || _answeredAt[i] == 0)
+            {
+                _answeredAt[i] = now;
+            }
+            else if (now - _answeredAt[i] > _silentTicks)
+            {
+                Trip(SafetyCheck.ModuleSilent, _controllerNames[i], Ms(now - _answeredAt[i]), Limits.ModuleSilentMs, "ms", now);
+            }
+        }
+    }
+
+    /// <summary>
+    /// While the motors are on, every module's bus watchdog must be armed with the robot file's period, as the status
+    /// poll reads it back: a module without one would drive on after the host stops.
+    /// </summary>
+    private void CheckWatchdogs(long now)
+    {
+        for (var i = 0; i < _controllers.Length; i++)
+        {
+            var read = _controllers[i].BusWatchdogMs;
+            if (read >= 0 && read != _watchdogMs)
+            {
+                Trip(SafetyCheck.WatchdogUnarmed, _controllerNames[i], read, _watchdogMs, "ms", now);
+            }
+        }
+    }
+
+    private void CheckMotor(int i, bool driven, bool homed, long now)
+    {
+        var m = _motors[i];
+        var position = m.PositionRad;
+        var current = m.CurrentA;
+        if (!double.IsFinite(position) || !double.IsFinite(current))
+        {
+            Trip(SafetyCheck.NonFinite, _motorNames[i], double.IsFinite(position) ? current : position, 0, double.IsFinite(position) ? "A" : "rad", now);
+            return;
+        }
+
+        var error = Math.Abs(_robot.SentGoalRad(m) - position);
+        Persist(ref _trackingSince[i], driven && error > _trackingLimit[i], now, _trackingTicks, SafetyCheck.TrackingError, i, error, _trackingLimit[i], "rad");
+        var limit = Limits.CurrentLimitFraction * m.CurrentLimitA;
+        Persist(ref _currentSince[i], Math.Abs(current) > limit, now, _currentTicks, SafetyCheck.OverCurrent, i, Math.Abs(current), limit, "A");
+
+        // Pot against encoder once the positions are trusted (after homing); the pot is read at the pot poll's rate.
+        var pot = m.PotPositionRad;
+        var distance = Math.Abs(pot - position);
+        Persist(ref _potSince[i], homed && double.IsFinite(pot) && distance > _potLimit[i], now, _potTicks, SafetyCheck.PotMismatch, i, distance, _potLimit[i], "rad");
+    }
+
+    private void Persist(ref long since, bool beyond, long now, long allowed, SafetyCheck check, int motor, double measured, double limit, string unit)
+    {
+        if (!beyond)
+        {
+            since = 0;
+            return;
+        }
+
+        if (since == 0)
+        {
+            since = now;
+        }
+
+        if (now - since >= allowed)
+        {
+            Trip(check, _motorNames[motor], measured, limit, unit, now);
+        }
+    }
+}

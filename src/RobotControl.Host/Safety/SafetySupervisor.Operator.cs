@@ -1,0 +1,218 @@
+using System.Globalization;
+using RobotControl.Modules;
+using RobotControl.Robot.Bus;
+using RobotControl.Robot.Control;
+using RobotControl.Robot.States;
+
+namespace RobotControl.Host.Safety;
+
+/// <summary>The operator's commands: home, pedal down and up, motors off, emergency stop (also from another thread), reset.</summary>
+public sealed partial class SafetySupervisor
+{
+    /// <summary>
+    /// INIT -> HOMING -> PEDAL_UP: motors off; homed from the pots and verified where positions may be lost (always
+    /// after a <see cref="Reset"/>; otherwise when a motor's module reports position lost or a pot mismatch); motors
+    /// on, holding the measured positions. Homing that does not verify every motor returns to INIT.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">Not at INIT, or homing incomplete (the message says how many motors failed).</exception>
+    public IReadOnlyList<HomingResult> Home(string source)
+    {
+        if (Level == RunLevel.EStop)
+        {
+            var trips = Trips;
+            var trip = trips.Count > 0 ? trips[0] : null;
+            throw new InvalidOperationException(trip is null
+                ? $"homing ({source}) refused: the run level is E_STOP; an operator reset comes first"
+                : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");
+        }
+
+        _levels.MoveTo(RunLevel.Homing, source, "homing from the joint pots");
+        _robot.HoldAtMeasured();
+        if (_robot.State == RobotState.Enabled)
+        {
+            _robot.EnableTorque(false);
+        }
+
+        var lost = _mustRehome ? _motors.Length : PositionsInDoubt();
+        if (lost == 0)
+        {
+            _robot.HoldAtMeasured();
+            _robot.EnableTorque(true);
+            _torqueOffTaken = false;
+            _levels.MoveTo(RunLevel.PedalUp, source, $"no module reports a lost position or a pot mismatch: not re-homed; motors on, holding");
+            return [];
+        }
+
+        var results = _robot.Home();
+        var failed = results.Count(r => !r.Succeeded);
+        if (failed > 0 || _robot.State != RobotState.Homed)
+        {
+            _levels.MoveTo(RunLevel.Init, source, $"homing incomplete: {failed} of {results.Count} motors not homed");
+            throw new InvalidOperationException($"homing incomplete: {failed} of {results.Count} motors not homed; the run level stays INIT");
+        }
+
+        _mustRehome = false;
+        _robot.HoldAtMeasured();
+        _robot.EnableTorque(true);
+        _torqueOffTaken = false;
+        _levels.MoveTo(RunLevel.PedalUp, source, $"{results.Count} motors homed and verified ({(lost == _motors.Length ? "after a reset" : $"{lost} had lost their position")}); motors on, holding");
+        return results;
+    }
+
+    /// <summary>PEDAL_UP -> PEDAL_DOWN: teleoperation drives the arms (from the measured positions, under the step cap).</summary>
+    /// <exception cref="InvalidOperationException">Not at PEDAL_UP, or an arm's input device data is older than the master timeout.</exception>
+    public void PedalDown(string source)
+    {
+        if (!_levels.CanMoveTo(RunLevel.PedalDown))
+        {
+            throw new InvalidOperationException($"pedal down ({source}) needs the run level PEDAL_UP, it is {Level.Name()}");
+        }
+
+        if (StaleArm() is { } stale)
+        {
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the input data of the {_robot.Definition.Arms[stale.Arm].Name} arm is {stale.AgeMs:0.#} ms old (master_timeout_ms {Limits.MasterTimeoutMs:0.#})"));
+        }
+
+        lock (_tripGate)
+        {
+            _tripped[(int)SafetyCheck.MasterTimeout] = false; // a new episode of teleoperation: a new timeout is a new trip
+        }
+
+        _robot.ReleaseHold();
+        _levels.MoveTo(RunLevel.PedalDown, source, "pedal down: teleoperation drives the arms");
+    }
+
+    /// <summary>PEDAL_DOWN -> PEDAL_UP: the arms hold where they are; teleoperation is ignored.</summary>
+    public void PedalUp(string source, string reason = "pedal up: holding position")
+    {
+        if (Level != RunLevel.PedalDown)
+        {
+            return;
+        }
+
+        _robot.HoldAtMeasured();
+        _levels.MoveTo(RunLevel.PedalUp, source, reason);
+    }
+
+    /// <summary>
+    /// PEDAL_UP or PEDAL_DOWN -> INIT: an operator turns the motors off without an emergency (e.g. to write persistent
+    /// parameters or rediscover the bus); <see cref="Home"/> turns them on again. At E_STOP or INIT the motors are
+    /// turned off and the run level stays.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">Homing runs.</exception>
+    public void MotorsOff(string source)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(source);
+        if (Level == RunLevel.Homing)
+        {
+            throw new InvalidOperationException($"motors off ({source}): homing runs, wait for it to end");
+        }
+
+        PedalUp(source, "pedal up: the motors go off");
+        _robot.HoldAtMeasured();
+        if (_robot.State is RobotState.Enabled or RobotState.Fault)
+        {
+            _robot.EnableTorque(false);
+        }
+
+        if (Level == RunLevel.PedalUp)
+        {
+            _levels.MoveTo(RunLevel.Init, source, "motors off: they go on again through homing (re-homed if positions are in doubt)");
+        }
+    }
+
+    /// <summary>An operator's emergency stop (console, CLI or pedal): the operator check's safe state, then E-STOP.</summary>
+    public void EmergencyStop(string source, string reason)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(source);
+        ArgumentException.ThrowIfNullOrWhiteSpace(reason);
+        Trip(SafetyCheck.Operator, string.Empty, 0, 0, string.Empty, _time.GetTimestamp(), source, reason);
+    }
+
+    /// <summary>
+    /// An emergency stop asked for from any thread (the command line's E-STOP key, a signal): taken in the next bus
+    /// cycle, on the thread that runs the checks, exactly as <see cref="EmergencyStop"/>. Safe to call at any time.
+    /// </summary>
+    public void RequestEmergencyStop(string source, string reason)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(source);
+        ArgumentException.ThrowIfNullOrWhiteSpace(reason);
+        Volatile.Write(ref _stopRequest, new EmergencyStopRequest(source, reason));
+    }
+
+    /// <summary>
+    /// Leaves E-STOP for INIT, on an operator's explicit request: motors off, faults cleared. The robot must be homed
+    /// again (<see cref="Home"/>) before it may move: positions may have been lost.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">Not at E-STOP.</exception>
+    public void Reset(string source)
+    {
+        if (Level != RunLevel.EStop)
+        {
+            throw new InvalidOperationException($"reset ({source}) applies at E_STOP only, the run level is {Level.Name()}");
+        }
+
+        if (_robot.State is RobotState.Enabled or RobotState.Fault)
+        {
+            _robot.EnableTorque(false);
+        }
+
+        _robot.ClearFaults();
+        _mustRehome = true;
+        lock (_tripGate)
+        {
+            Array.Clear(_tripped);
+        }
+
+        Array.Clear(_trackingSince);
+        Array.Clear(_currentSince);
+        Array.Clear(_potSince);
+        _levels.MoveTo(RunLevel.Init, source, "operator reset: motors off, faults cleared; homing needed before motion");
+    }
+
+    /// <summary>
+    /// Motors whose module said at discovery or since (its latched <c>hardware_error_status</c>) that a position may
+    /// be wrong (position lost or pot mismatch); a module that is not present counts all its motors. No bus traffic.
+    /// </summary>
+    private int PositionsInDoubt()
+    {
+        var doubt = 0;
+        foreach (var c in _controllers)
+        {
+            if (!c.Present || ((HardwareErrors)c.HardwareErrorStatus).HasAny(HardwareErrors.PositionLost | HardwareErrors.PotMismatch))
+            {
+                doubt += c.Motors.Count;
+            }
+        }
+
+        return doubt;
+    }
+
+    /// <summary>The operator's pedals as the graph reports them (nothing when the graph has none): edges move the run level.</summary>
+    private void FollowOperator()
+    {
+        if (Volatile.Read(ref _stopRequest) is not null && Interlocked.Exchange(ref _stopRequest, null) is { } request)
+        {
+            EmergencyStop(request.Source, request.Reason);
+        }
+
+        var stop = _robot.EmergencyStopPedal;
+        if (stop == OperatorPedal.Down && _lastEmergencyStop != OperatorPedal.Down && Level != RunLevel.EStop)
+        {
+            EmergencyStop(PedalSource, "emergency-stop pedal pressed");
+        }
+
+        _lastEmergencyStop = stop;
+        var pedal = _robot.Pedal;
+        if (pedal == OperatorPedal.Down && _lastPedal == OperatorPedal.Up && Level == RunLevel.PedalUp && StaleArm() is null)
+        {
+            PedalDown(PedalSource);
+        }
+        else if (pedal == OperatorPedal.Up && Level == RunLevel.PedalDown)
+        {
+            PedalUp(PedalSource, "pedal up: holding position");
+        }
+
+        _lastPedal = pedal;
+    }
+}
