@@ -31,7 +31,9 @@ public sealed class ControlTableTests
         }
         """;
 
-    private static readonly ControlTable Table = ControlTable.Parse(Json);
+    // Parsed by each test, not once in a static field: a mutant of the reader must meet every test (Stryker runs the
+    // mutants of code reached from a static initialiser only once per test process).
+    private static ControlTable Table => ControlTable.Parse(Json);
 
     [Fact]
     public void The_header_and_every_field_attribute_are_read()
@@ -115,5 +117,24 @@ public sealed class ControlTableTests
         Assert.Equal("bad", Table.Codes("a")[5]);
         Assert.Equal("ok", Table.Codes("a")[0]);
         Assert.Empty(Table.Codes("b"));
+    }
+
+    [Fact]
+    public void A_strided_field_maps_its_instances_only_and_an_unsigned_byte_decodes_above_127()
+    {
+        // u (u8, 3 motors at 1, 4, 7) and a gap after it: bytes 0, 2, 3, 5, 6, 8, 9 are unmapped.
+        var table = ControlTable.Parse("""
+            {
+              "table_size": 10, "max_motors": 3,
+              "areas": { "persistent": { "start": 0, "end": 0 }, "volatile": { "start": 0, "end": 10 } },
+              "fields": [
+                { "name": "u", "address": 1, "size": 1, "type": "u8", "access": "RW", "area": "volatile", "count": 3, "stride": 3,
+                  "min": 0, "max": 255, "default": 0 }
+              ]
+            }
+            """);
+        Assert.Equal([(1, 1), (4, 1), (7, 1)], table.MappedRuns(0, 10));
+        Assert.Equal(200, table["u"].Decode([200]));
+        Assert.False(table["u"].Signed);
     }
 }
