@@ -33,6 +33,27 @@ public sealed class DelayedWireFaultTests
         Assert.All(bystander.UpstreamFaults, Assert.False);
     }
 
+    [Fact]
+    public void Faults_on_a_direct_and_a_delayed_wire_at_once_still_mark_the_instance_as_downstream_of_a_fault()
+    {
+        // a -> first (faults at tick 1) -> watcher -> second (faults at tick 1) -> watcher.second, delayed. From tick 2
+        // on the watcher hears of both faults together; two faults must not cancel out.
+        var graph = new PluginGraph();
+        var watcher = new FaultWatcher("watcher");
+        graph.Add(new CounterSource("a"));
+        graph.Add(new Gain("first") { ThrowAtTick = 1 });
+        graph.Add(watcher);
+        graph.Add(new Gain("second") { ThrowAtTick = 1 });
+        graph.Connect("a.value", "first.in");
+        graph.Connect("first.out", "watcher.in");
+        graph.Connect("watcher.out", "second.in");
+        graph.Connect("second.out", "watcher.second", delayed: true);
+
+        Ticks.Run(graph.Compile(), 4);
+
+        Assert.Equal([false, true, true, true], watcher.UpstreamFaults);
+    }
+
     private sealed class FaultWatcher : Plugin
     {
         private readonly InputPort _in;

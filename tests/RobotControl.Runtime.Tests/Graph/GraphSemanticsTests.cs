@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Json;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Tests.Support;
 using RobotControl.TestSupport;
@@ -193,17 +194,32 @@ public sealed class GraphSemanticsTests
         var graph = new PluginGraph();
         var nan = new Gain("nan") { NaNAtTick = 2 };
         var down = new Gain("down");
+        var forced = new Gain("forced");
         graph.Add(new CounterSource("a"));
         graph.Add(nan);
         graph.Add(down);
+        graph.Add(forced);
         graph.Connect("a.value", "nan.in");
         graph.Connect("nan.out", "down.in");
+        graph.Connect("nan.force", "forced.in");
 
         var program = graph.Compile();
         Ticks.Run(program, 4);
 
-        Assert.Equal([0.0, 1, 1, 3], down.Seen);
+        Assert.Equal([0.0, 1, 1, 3], down.Seen); // out: hold the last finite value
+        Assert.Equal([0.0, 1, 0, 3], forced.Seen); // force: its declared safe value, zero
         Assert.Equal(2, program.NonFiniteOutputs("nan")); // out held at 1, force zeroed
         Assert.False(program.IsFaulted("nan"));
+    }
+
+    [Fact]
+    public void The_message_of_an_invalid_graph_names_the_file_counts_the_problems_and_lists_each_on_its_own_line()
+    {
+        var nl = Environment.NewLine;
+        var two = new GraphException([new JsonProblem("wires[0].to", "no such input"), new JsonProblem("instances[1].type", "unknown type")], "g.json");
+        Assert.Equal($"g.json: invalid graph (2 problems):{nl}  wires[0].to: no such input{nl}  instances[1].type: unknown type", two.Message);
+        var one = new GraphException([new JsonProblem("", "graph has a cycle")]);
+        Assert.Equal($"invalid graph (1 problem):{nl}  graph has a cycle", one.Message);
+        Assert.Equal(("g.json", 2), (two.File, two.Problems.Count));
     }
 }
