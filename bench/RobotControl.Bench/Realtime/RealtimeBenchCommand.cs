@@ -92,66 +92,58 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         {
             string? loadProblem = null;
             using var load = name == "busy" ? ChildProcess.StartCpuLoad(duration + TimeSpan.FromSeconds(10), out loadProblem) : null;
-            var before = GCSettings.LatencyMode;
-            GCSettings.LatencyMode = name == "idle" ? GCLatencyMode.Interactive : GCLatencyMode.SustainedLowLatency;
+            var gc = name == "idle" ? GCLatencyMode.Interactive : GCLatencyMode.SustainedLowLatency; // set by the run, restored after it
             var loadStart = LoadAverage();
             CycleTimesLink? cycles = null;
             var gen0 = GC.CollectionCount(0);
             var gen2 = GC.CollectionCount(2);
             long allocStart = 0, allocStartAt = 0, allocEnd = 0, allocEndAt = 0;
             double lagP50 = 0, lagP99 = 0, lagP999 = 0, lagMax = 0;
-            try
-            {
-                var report = HeadlessRun.RunRealTime(
-                    new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads },
-                    HostPlugins.Catalog(),
-                    new VirtualRunHooks
+            var report = HeadlessRun.RunRealTime(
+                new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads, RealtimeGcLatency = gc },
+                HostPlugins.Catalog(),
+                new VirtualRunHooks
+                {
+                    WrapLink = (link, _) => cycles = new CycleTimesLink(link, (int)(duration.TotalSeconds * 2_000) + 10_000, () => (allocStart, allocStartAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp())),
+                    AfterRun = session =>
                     {
-                        WrapLink = (link, _) => cycles = new CycleTimesLink(link, (int)(duration.TotalSeconds * 2_000) + 10_000, () => (allocStart, allocStartAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp())),
-                        AfterRun = session =>
-                        {
-                            (allocEnd, allocEndAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp());
-                            var s = session.Loop.Statistics;
-                            (lagP50, lagP99, lagP999, lagMax) = (s.StartLagPercentile(0.5), s.StartLagPercentile(0.99), s.StartLagPercentile(0.999), s.StartLagMaxUs);
-                        },
-                    });
-                var periods = Periods(cycles!.Starts);
-                var allocSeconds = (allocEndAt - allocStartAt) / (double)Stopwatch.Frequency;
-                var bytesPerSecond = allocStart > 0 && allocSeconds > 0 ? (allocEnd - allocStart) / allocSeconds : double.NaN;
-                var safety = report.Safety;
-                return new ScenarioResult(
-                    name,
-                    GCSettings.LatencyMode.ToString(),
-                    report.Scheduling ?? threads.Outcome,
-                    loadProblem,
-                    loadStart,
-                    LoadAverage(),
-                    report.Ticks,
-                    report.DeadlineMisses,
-                    report.Ticks == 0 ? 0 : report.DeadlineMisses / (double)report.Ticks,
-                    new Quantiles(lagP50, lagP99, lagP999, lagMax),
-                    new Quantiles(report.TickMedianUs, report.TickP99Us, report.TickP99Us, report.TickMaxUs),
-                    periods.Length == 0 ? new Quantiles(0, 0, 0, 0) : new Quantiles(Quantile(periods, 0.5), Quantile(periods, 0.99), Quantile(periods, 0.999), periods[^1]),
-                    periods.Length == 0 ? 0 : periods.Length / (periods.Sum() * 1e-6),
-                    report.Bus.LateReplies,
-                    report.Bus.CrcErrors,
-                    report.Bus.Timeouts,
-                    report.Bus.Retries,
-                    report.Faults.Count(f => f.Message.Contains("watchdog", StringComparison.OrdinalIgnoreCase)),
-                    safety is null ? [] : [.. safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds:F3} s".Replace("  ", " ", StringComparison.Ordinal))],
-                    report.TrackingRmsMm,
-                    report.TrackingMaxMm,
-                    reference.TrackingRmsMm == 0 ? double.NaN : report.TrackingRmsMm / reference.TrackingRmsMm,
-                    bytesPerSecond / 1000.0,
-                    bytesPerSecond / (periods.Length == 0 ? double.NaN : periods.Length / (periods.Sum() * 1e-6)),
-                    GC.CollectionCount(0) - gen0,
-                    GC.CollectionCount(2) - gen2,
-                    report.Stop?.TorqueOff ?? false);
-            }
-            finally
-            {
-                GCSettings.LatencyMode = before;
-            }
+                        (allocEnd, allocEndAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp());
+                        var s = session.Loop.Statistics;
+                        (lagP50, lagP99, lagP999, lagMax) = (s.StartLagPercentile(0.5), s.StartLagPercentile(0.99), s.StartLagPercentile(0.999), s.StartLagMaxUs);
+                    },
+                });
+            var periods = Periods(cycles!.Starts);
+            var allocSeconds = (allocEndAt - allocStartAt) / (double)Stopwatch.Frequency;
+            var bytesPerSecond = allocStart > 0 && allocSeconds > 0 ? (allocEnd - allocStart) / allocSeconds : double.NaN;
+            var safety = report.Safety;
+            return new ScenarioResult(
+                name,
+                gc.ToString(),
+                report.Scheduling ?? threads.Outcome,
+                loadProblem,
+                loadStart,
+                LoadAverage(),
+                report.Ticks,
+                report.DeadlineMisses,
+                report.Ticks == 0 ? 0 : report.DeadlineMisses / (double)report.Ticks,
+                new Quantiles(lagP50, lagP99, lagP999, lagMax),
+                new Quantiles(report.TickMedianUs, report.TickP99Us, report.TickP99Us, report.TickMaxUs),
+                periods.Length == 0 ? new Quantiles(0, 0, 0, 0) : new Quantiles(Quantile(periods, 0.5), Quantile(periods, 0.99), Quantile(periods, 0.999), periods[^1]),
+                periods.Length == 0 ? 0 : periods.Length / (periods.Sum() * 1e-6),
+                report.Bus.LateReplies,
+                report.Bus.CrcErrors,
+                report.Bus.Timeouts,
+                report.Bus.Retries,
+                report.Faults.Count(f => f.Message.Contains("watchdog", StringComparison.OrdinalIgnoreCase)),
+                safety is null ? [] : [.. safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds:F3} s".Replace("  ", " ", StringComparison.Ordinal))],
+                report.TrackingRmsMm,
+                report.TrackingMaxMm,
+                reference.TrackingRmsMm == 0 ? double.NaN : report.TrackingRmsMm / reference.TrackingRmsMm,
+                bytesPerSecond / 1000.0,
+                bytesPerSecond / (periods.Length == 0 ? double.NaN : periods.Length / (periods.Sum() * 1e-6)),
+                GC.CollectionCount(0) - gen0,
+                GC.CollectionCount(2) - gen2,
+                report.Stop?.TorqueOff ?? false);
         }
     }
 

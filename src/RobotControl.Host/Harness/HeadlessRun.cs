@@ -146,6 +146,9 @@ public static class HeadlessRun
         var nextProgress = options.ProgressInterval;
         StopCheck check;
         var threads = options.Threads ?? RealtimeThreads.Default;
+        var gcBefore = System.Runtime.GCSettings.LatencyMode;
+        System.Runtime.GCSettings.LatencyMode = options.RealtimeGcLatency;
+        using var gcRestore = new RestoreOnDispose(() => System.Runtime.GCSettings.LatencyMode = gcBefore);
         session.StartRealtime(threads); // warm-up, homing, motors on: the run's time starts when the threads do
         var begin = clock.GetTimestamp();
         PressPedal(session, begin);
@@ -176,7 +179,7 @@ public static class HeadlessRun
             faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"control loop failed: {failure.Message}"));
         }
 
-        return Finish(stopper, check, loop, meter!, elapsed, session, faults) with { Scheduling = threads.Outcome };
+        return Finish(stopper, check, loop, meter!, elapsed, session, faults) with { Scheduling = $"{threads.Outcome}; GC {options.RealtimeGcLatency}" };
     }
 
     /// <summary>The report, with how the run ended and what the modules said after the motors were switched off.</summary>
@@ -256,5 +259,11 @@ public static class HeadlessRun
         }
 
         throw new FormatException($"--inject: no module '{module}' (known: {string.Join(", ", robot.Modules.Modules.Select(m => $"{(m.Arm >= 0 && m.Arm < robot.Arms.Count ? robot.Arms[m.Arm].Name : "?")}.{m.Location} (id {m.Id})"))})");
+    }
+
+    /// <summary>Runs an action when disposed (puts a process-wide setting back after a run, however it ends).</summary>
+    private sealed class RestoreOnDispose(Action restore) : IDisposable
+    {
+        public void Dispose() => restore();
     }
 }

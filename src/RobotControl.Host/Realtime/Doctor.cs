@@ -90,7 +90,7 @@ public static class Doctor
     private static DoctorFinding Priority()
     {
         var threads = new RealtimeThreads(priority: 99, cpu: null);
-        threads.Start(static () => { });
+        threads.Probe();
         return threads.GotRealtimePriority
             ? new DoctorFinding("real-time priority", $"this process may use {threads.Outcome}", null)
             : new DoctorFinding("real-time priority", threads.Outcome, "grant CAP_SYS_NICE (setcap cap_sys_nice+ep) or an rtprio limit, then run with --rt-priority 80");

@@ -4,11 +4,12 @@ using System.Runtime.InteropServices;
 namespace RobotControl.Host.Realtime;
 
 /// <summary>
-/// How the real-time threads (bus, control loop) are scheduled: SCHED_FIFO at <see cref="Priority"/> (0: the normal
-/// scheduler) and pinned to <see cref="Cpu"/> (null: any CPU). Linux threads inherit the scheduling policy, priority
-/// and CPU mask of the thread that creates them, so <see cref="Start"/> gives them to the calling thread, starts the
-/// threads, and gives the calling thread back its own. Where the process may not have real-time priority (no
-/// CAP_SYS_NICE, RLIMIT_RTPRIO 0) this is said once in <see cref="Outcome"/> and the threads run normally.
+/// How the real-time threads (bus, control loop) are scheduled: SCHED_FIFO at <see cref="Priority"/> for the loop
+/// thread and one below for the bus thread (0: the normal scheduler), pinned to <see cref="Cpu"/> (null: any CPU).
+/// .NET threads do not inherit the creating thread's policy (a new managed thread starts under SCHED_OTHER, measured by
+/// <c>RealtimeThreadsTests</c>), so each thread applies its scheduling to itself first thing (<see cref="Start"/>
+/// hands each one its prologue). Where the process may not have real-time priority (no CAP_SYS_NICE, RLIMIT_RTPRIO 0)
+/// this is said in <see cref="Outcome"/> and the threads run normally.
 /// </summary>
 public sealed class RealtimeThreads
 {
@@ -37,20 +38,64 @@ public sealed class RealtimeThreads
     /// <summary>The CPU the threads are pinned to (null: any).</summary>
     public int? Cpu { get; }
 
-    /// <summary>What the threads got, in one line (set by <see cref="Start"/>).</summary>
+    /// <summary>What the threads got, in one line (complete once <see cref="Start"/> returns).</summary>
     public string Outcome { get; private set; } = "not started";
 
     /// <summary>True when the threads got SCHED_FIFO.</summary>
     public bool GotRealtimePriority { get; private set; }
 
-    /// <summary>Runs <paramref name="startThreads"/> (which creates the threads) with this scheduling, then restores the calling thread's.</summary>
-    public void Start(Action startThreads)
+    /// <summary>How long <see cref="Start"/> waits for the threads to apply their scheduling.</summary>
+    private static readonly TimeSpan PrologueTimeout = TimeSpan.FromSeconds(5);
+
+    /// <summary>
+    /// Starts the bus thread and the control loop's thread, each given the prologue it must run first on its own
+    /// thread: the loop at <see cref="Priority"/>, the bus thread one SCHED_FIFO priority below (when both want the same
+    /// CPU the loop's tick, a few tens of microseconds, preempts bus work, which waits on the wire most of the time;
+    /// at one priority a FIFO thread runs until it blocks, and the loop would wait for the bus thread's next read).
+    /// Returns once both prologues have run.
+    /// </summary>
+    /// <exception cref="TimeoutException">A thread did not run its prologue within 5 s.</exception>
+    public void Start(Action<Action> startBus, Action<Action> startLoop)
     {
-        ArgumentNullException.ThrowIfNull(startThreads);
+        ArgumentNullException.ThrowIfNull(startBus);
+        ArgumentNullException.ThrowIfNull(startLoop);
         if (!OperatingSystem.IsLinux() || (Priority == 0 && Cpu is null))
         {
             Outcome = "normal scheduling, any CPU";
-            startThreads();
+            startBus(static () => { });
+            startLoop(static () => { });
+            return;
+        }
+
+        string? bus = null, loop = null;
+        using var applied = new CountdownEvent(2);
+        startBus(() =>
+        {
+            bus = ApplyToCurrentThread(Priority > 1 ? Priority - 1 : Priority);
+            applied.Signal();
+        });
+        startLoop(() =>
+        {
+            loop = ApplyToCurrentThread(Priority);
+            applied.Signal();
+        });
+        if (!applied.Wait(PrologueTimeout))
+        {
+            throw new TimeoutException("the bus and loop threads did not apply their scheduling within 5 s");
+        }
+
+        Outcome = loop == bus ? loop! : $"loop thread: {loop}; bus thread: {bus}";
+    }
+
+    /// <summary>
+    /// Raises the calling thread to SCHED_FIFO at this priority (on this CPU) and sets it back afterwards: whether the
+    /// process may have real-time priority at all (<see cref="Outcome"/>, <see cref="GotRealtimePriority"/>).
+    /// </summary>
+    public void Probe()
+    {
+        if (!OperatingSystem.IsLinux())
+        {
+            Outcome = "normal scheduling, any CPU";
             return;
         }
 
@@ -59,12 +104,9 @@ public sealed class RealtimeThreads
         _ = SchedulerCalls.GetParam(0, ref priority);
         var mask = new byte[SchedulerCalls.MaskBytes];
         var haveMask = SchedulerCalls.GetAffinity(0, mask.Length, mask) == 0;
-        var said = new List<string>();
         try
         {
-            said.Add(RaisePriority());
-            said.Add(Pin());
-            startThreads();
+            Outcome = ApplyToCurrentThread(Priority);
         }
         finally
         {
@@ -73,19 +115,20 @@ public sealed class RealtimeThreads
             {
                 _ = SchedulerCalls.SetAffinity(0, mask.Length, mask);
             }
-
-            Outcome = string.Join("; ", said);
         }
     }
 
-    private string RaisePriority()
+    /// <summary>SCHED_FIFO at <paramref name="priority"/> and the CPU pin for the calling thread; says what it got.</summary>
+    private string ApplyToCurrentThread(int priority) => $"{RaisePriority(priority)}; {Pin()}";
+
+    private string RaisePriority(int priority)
     {
-        if (Priority == 0)
+        if (priority == 0)
         {
             return "normal scheduling";
         }
 
-        var p = Math.Min(Priority, SchedulerCalls.PriorityMax(SchedulerCalls.SchedFifo));
+        var p = Math.Min(priority, SchedulerCalls.PriorityMax(SchedulerCalls.SchedFifo));
         if (SchedulerCalls.SetScheduler(0, SchedulerCalls.SchedFifo, ref p) == 0)
         {
             GotRealtimePriority = true;

@@ -11,21 +11,32 @@ namespace RobotControl.Robot.Bus;
 /// <summary>
 /// The bus cycle and its steps: <see cref="Write"/> (goals out), <see cref="Read"/> (feedback in) and
 /// <see cref="Update"/> (feedback published, modules supervised), run back to back by the bus thread
-/// (<see cref="Start"/>), by <see cref="RunCycle"/>, or one by one by a virtual schedule that ticks the control loop
+/// (<see cref="Start(Action)"/>), by <see cref="RunCycle"/>, or one by one by a virtual schedule that ticks the control loop
 /// in between.
 /// </summary>
 public sealed partial class BusRobot
 {
     /// <summary>Runs bus cycles on a thread of its own until <see cref="Stop"/> (real links).</summary>
-    public void Start()
+    public void Start() => Start(static () => { });
+
+    /// <summary>
+    /// Runs bus cycles on a thread of its own until <see cref="Stop"/>; the thread first runs <paramref name="prologue"/>
+    /// (e.g. to give itself real-time scheduling, which .NET threads do not inherit).
+    /// </summary>
+    public void Start(Action prologue)
     {
+        ArgumentNullException.ThrowIfNull(prologue);
         if (_thread is not null)
         {
             return;
         }
 
         _stopping = false;
-        _thread = new Thread(Loop) { IsBackground = true, Name = $"bus {Definition.Name}", Priority = ThreadPriority.AboveNormal };
+        _thread = new Thread(() =>
+        {
+            prologue();
+            Loop();
+        }) { IsBackground = true, Name = $"bus {Definition.Name}", Priority = ThreadPriority.AboveNormal };
         _thread.Start();
     }
 

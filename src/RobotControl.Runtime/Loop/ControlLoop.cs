@@ -6,7 +6,7 @@ namespace RobotControl.Runtime.Loop;
 
 /// <summary>
 /// Runs a <see cref="GraphProgram"/> at a fixed rate on the clock of an injectable <see cref="TimeProvider"/>.
-/// Either on its own thread (<see cref="Start"/>: sleeps, then spins to the deadline; a tick that ends after its
+/// Either on its own thread (<see cref="Start(Action)"/>: sleeps, then spins to the deadline; a tick that ends after its
 /// deadline counts as a miss and a loop that falls a whole period behind skips ticks rather than bursting), or
 /// stepped by the caller (<see cref="Step"/>: one tick at the clock's current time, for virtual clocks; the caller
 /// advances the clock one period between steps, which runs exactly like the thread, deterministically). Ticks
@@ -80,14 +80,25 @@ public sealed class ControlLoop : IDisposable
     }
 
     /// <summary>Starts the loop thread.</summary>
-    public void Start()
+    public void Start() => Start(static () => { });
+
+    /// <summary>
+    /// Starts the loop thread, which first runs <paramref name="prologue"/> (e.g. to give itself real-time scheduling,
+    /// which .NET threads do not inherit).
+    /// </summary>
+    public void Start(Action prologue)
     {
+        ArgumentNullException.ThrowIfNull(prologue);
         if (_thread is not null || _started)
         {
             throw new InvalidOperationException("the loop was already started");
         }
 
-        _thread = new Thread(ThreadMain) { Name = "control loop", IsBackground = true, Priority = ThreadPriority.Highest };
+        _thread = new Thread(() =>
+        {
+            prologue();
+            ThreadMain();
+        }) { Name = "control loop", IsBackground = true, Priority = ThreadPriority.Highest };
         _thread.Start();
     }
 
