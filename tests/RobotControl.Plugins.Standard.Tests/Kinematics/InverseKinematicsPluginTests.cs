@@ -68,6 +68,38 @@ public sealed class InverseKinematicsPluginTests
     }
 
     [Fact]
+    public void An_invalid_target_right_after_a_reached_one_clears_reached_and_keeps_everything_else()
+    {
+        var chain = new KinematicChain(ShippedRobots.Lb);
+        var ik = Ik(new InverseKinematicsSettings { InitialJointsDeg = "-30,-30,0,90,0" });
+        ik.Tick(); // the target is where the arm starts: reached
+        Assert.Equal(1.0, ik["reached"]);
+        var before = Joints(ik, chain);
+        var error = ik["error_mm"];
+
+        ik.Set(("y", double.PositiveInfinity)).Tick();
+
+        Assert.Equal(0.0, ik["reached"]);
+        Assert.Equal(before, Joints(ik, chain));
+        Assert.Equal((0.0, 0.0, 0.0), (ik["fx"], ik["fy"], ik["fz"]));
+        Assert.Equal(error, ik["error_mm"]); // the last solved error is kept, not overwritten by the invalid target's
+    }
+
+    [Fact]
+    public void Initial_joints_beyond_the_limits_start_clamped_to_them()
+    {
+        // 400 deg and -400 deg lie beyond every joint's range of the LB-1.0.
+        var chain = new KinematicChain(ShippedRobots.Lb);
+        var ik = Ik(new InverseKinematicsSettings { InitialJointsDeg = "-400,-30,0,400,0" });
+
+        var joints = Joints(ik, chain);
+
+        Assert.Equal(chain.MinRad[0], joints[0], 12);
+        Assert.Equal(chain.MaxRad[3], joints[3], 12);
+        Assert.Equal(-30 * Math.PI / 180, joints[1], 12);
+    }
+
+    [Fact]
     public void Without_initial_joints_the_arm_starts_mid_range()
     {
         var chain = new KinematicChain(ShippedRobots.Lb);
