@@ -47,7 +47,12 @@ public sealed class ConsoleFixture : IAsyncLifetime
         Session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = Path.Combine(RepoRoot, "graphs", "teleop-lb.json"), Catalog = Catalog(), Virtual = true });
         Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null);
         _playwright = await Playwright.CreateAsync();
-        _browser = await _playwright.Chromium.LaunchAsync(new BrowserTypeLaunchOptions
+        _browser = await LaunchChromiumAsync(_playwright);
+    }
+
+    /// <summary>Debian's headless Chromium with WebGL through SwiftShader.</summary>
+    public static Task<IBrowser> LaunchChromiumAsync(IPlaywright playwright) =>
+        playwright.Chromium.LaunchAsync(new BrowserTypeLaunchOptions
         {
             ExecutablePath = ChromiumPath,
             Headless = true,
@@ -57,7 +62,6 @@ public sealed class ConsoleFixture : IAsyncLifetime
                 "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
             ],
         });
-    }
 
     public async Task DisposeAsync()
     {

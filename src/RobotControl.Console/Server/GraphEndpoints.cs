@@ -14,7 +14,8 @@ internal static class GraphEndpoints
         var api = app.MapGroup("/api/editor");
         api.MapGet("/catalog", (string? robot) => ApiEndpoints.Json(editor.Catalog(robot)));
         api.MapGet("/graphs", () => ApiEndpoints.Json(new { Folder = Path.GetFileName(editor.Folder.Root), Graphs = editor.Folder.List() }));
-        api.MapGet("/graphs/{name}", (string name) => editor.Read(name, out var refusal) is { } text
+        // Route values keep %2F escaped: unescape, so "sub%2Fx.json" is the refused "sub/x.json", not a file of that name.
+        api.MapGet("/graphs/{name}", (string name) => editor.Read(Uri.UnescapeDataString(name), out var refusal) is { } text
             ? Results.Text(text, "application/json")
             : ApiEndpoints.Error(refusal.Contains("no such file", StringComparison.Ordinal) ? StatusCodes.Status404NotFound : StatusCodes.Status400BadRequest, refusal));
         api.MapPost("/check", async (HttpRequest request) =>
@@ -27,6 +28,7 @@ internal static class GraphEndpoints
         api.MapPut("/graphs/{name}", async (string name, HttpRequest request) =>
         {
             var (body, problem) = await ReadGraph(request, "save").ConfigureAwait(false);
+            name = Uri.UnescapeDataString(name);
             return body is null ? Bad(problem) : Refusing(editor.Save(name, body.Graph!.Value.GetRawText(), out var refusal), refusal, $"saved {name}", name);
         });
         api.MapGet("/run", () => ApiEndpoints.Json(editor.Runner.View));
