@@ -1,9 +1,12 @@
+using System.Text.Json;
+using RobotControl.Hardware.Json;
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Plugins.Sdk.Settings;
 using RobotControl.Runtime.Discovery;
+using RobotControl.Runtime.GraphFiles;
 using RobotControl.Runtime.Robot;
 
 namespace RobotControl.WebConsole.Editor;
@@ -41,20 +44,61 @@ internal static class EditorCatalog
         return new CatalogView(types, robotPorts, robotFile, catalog.Problems);
     }
 
-    private static PluginTypeView Describe(PluginTypeInfo type, RobotDefinition? robot, string baseDirectory)
+    /// <summary>
+    /// The ports of each instance of a loaded graph's text whose settings read cleanly (a type's ports may depend on
+    /// its settings: the touch's on its back end, the playback's on its file). Problems are the loader's to report.
+    /// </summary>
+    public static Dictionary<string, NodePortsView> InstancePorts(LoadedGraph? loaded, JsonElement root, PluginCatalog catalog, RobotDefinition? robot, string baseDirectory)
     {
-        var settings = type.Settings?.Settings.Select(Setting).ToList() ?? [];
-        NodePortsView? ports = null;
-        string? problem = null;
+        var ports = new Dictionary<string, NodePortsView>(StringComparer.Ordinal);
+        if (loaded is not null)
+        {
+            foreach (var plugin in loaded.Graph.Instances)
+            {
+                ports[plugin.Name] = Ports(plugin);
+            }
+
+            return ports;
+        }
+
+        if (!root.TryGetProperty("instances", out var instances) || instances.ValueKind != JsonValueKind.Array)
+        {
+            return ports;
+        }
+
+        foreach (var item in instances.EnumerateArray())
+        {
+            if (item.ValueKind != JsonValueKind.Object || !item.TryGetProperty("name", out var n) || n.ValueKind != JsonValueKind.String
+                || !item.TryGetProperty("type", out var t) || t.ValueKind != JsonValueKind.String || catalog.Find(t.GetString()!) is not { } type)
+            {
+                continue;
+            }
+
+            var errors = new List<JsonProblem>();
+            var settings = type.Settings?.Read(item.TryGetProperty("settings", out var s) ? s : default, errors);
+            if (errors.Count == 0 && TryPorts(type, settings, robot, baseDirectory, out var found, out _))
+            {
+                ports[n.GetString()!] = found!;
+            }
+        }
+
+        return ports;
+    }
+
+    private static bool TryPorts(PluginTypeInfo type, PluginSettings? settings, RobotDefinition? robot, string baseDirectory, out NodePortsView? ports, out string? problem)
+    {
+        ports = null;
+        problem = null;
         try
         {
             var context = new PluginContext(ProbeName, robot, TimeProvider.System, baseDirectory)
             {
                 DeviceOpener = _ => throw new InvalidOperationException("the editor opens no device"),
             };
-            var plugin = type.Create(null, context);
+            var plugin = type.Create(settings, context);
             ports = Ports(plugin);
             (plugin as IDisposable)?.Dispose();
+            return true;
         }
         catch (SettingsException ex)
         {
@@ -67,6 +111,13 @@ internal static class EditorCatalog
             problem = $"ports depend on settings: {ex.Message}";
         }
 
+        return false;
+    }
+
+    private static PluginTypeView Describe(PluginTypeInfo type, RobotDefinition? robot, string baseDirectory)
+    {
+        var settings = type.Settings?.Settings.Select(Setting).ToList() ?? [];
+        TryPorts(type, null, robot, baseDirectory, out var ports, out var problem);
         return new PluginTypeView(type.Name, type.Description, type.AssemblyName.Name ?? string.Empty, settings, ports, problem);
     }
 

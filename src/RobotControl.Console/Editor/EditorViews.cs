@@ -51,3 +51,8 @@ public sealed record ProblemView(string Path, string Message);
 /// <param name="Transport">The robot it runs on (virtual robot or the configured transport).</param>
 /// <param name="Problem">Why the last start failed, else null.</param>
 public sealed record RunView(bool Running, string? Graph, string Transport, string? Problem);
+
+/// <summary>What a check of the edited graph found.</summary>
+/// <param name="Problems">The loader's problems (empty: the graph loads and can run).</param>
+/// <param name="Ports">The ports of each instance that could be created with its settings (and of <c>robot</c>).</param>
+public sealed record CheckView(IReadOnlyList<ProblemView> Problems, IReadOnlyDictionary<string, NodePortsView> Ports);

@@ -1,5 +1,7 @@
 using System.Text.Json;
 using RobotControl.Hardware.Json;
+using RobotControl.Hardware.Loading;
+using RobotControl.Hardware.Model;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;
@@ -41,8 +43,32 @@ public sealed class GraphEditor
     public CatalogView Catalog(string? robotFile) => EditorCatalog.Describe(_catalog, Folder, robotFile ?? RobotOf(Runner.GraphPath));
 
     /// <summary>Checks graph text as the loader does; <paramref name="name"/> places it in the folder (null: unsaved).</summary>
-    /// <returns>Every problem (empty when the graph loads), or null with <paramref name="refusal"/> when the name is refused.</returns>
-    public IReadOnlyList<ProblemView>? Check(string? name, string json, out string refusal) => Load(name, json, out refusal, out _);
+    /// <returns>Every problem (none when the graph loads) and each instance's ports, or null with <paramref name="refusal"/> when the name is refused.</returns>
+    public CheckView? Check(string? name, string json, out string refusal)
+    {
+        var problems = Load(name, json, out refusal, out var loaded);
+        if (problems is null)
+        {
+            return null;
+        }
+
+        if (loaded is not null)
+        {
+            return new CheckView(problems, EditorCatalog.InstancePorts(loaded, default, _catalog, null, Folder.Root));
+        }
+
+        try
+        {
+            using var document = JsonDocument.Parse(json, new JsonDocumentOptions { CommentHandling = JsonCommentHandling.Skip });
+            var root = document.RootElement;
+            var robot = root.ValueKind == JsonValueKind.Object && root.TryGetProperty("robot", out var r) && r.ValueKind == JsonValueKind.String ? TryRobot(r.GetString()!) : null;
+            return new CheckView(problems, root.ValueKind == JsonValueKind.Object ? EditorCatalog.InstancePorts(null, root, _catalog, robot, Folder.Root) : new Dictionary<string, NodePortsView>());
+        }
+        catch (JsonException)
+        {
+            return new CheckView(problems, new Dictionary<string, NodePortsView>());
+        }
+    }
 
     /// <summary>Writes the graph with the loader's writer after checking it; a graph with problems is not written.</summary>
     /// <returns>The problems (empty: written), or null with <paramref name="refusal"/> when the name is refused.</returns>
@@ -93,6 +119,18 @@ public sealed class GraphEditor
         catch (GraphException ex)
         {
             return [.. ex.Problems.Select(View)];
+        }
+    }
+
+    private RobotDefinition? TryRobot(string file)
+    {
+        try
+        {
+            return RobotLoader.Load(Path.Combine(Folder.Root, file));
+        }
+        catch (RobotDataException)
+        {
+            return null;
         }
     }
 

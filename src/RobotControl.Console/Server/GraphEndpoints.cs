@@ -22,7 +22,7 @@ internal static class GraphEndpoints
         {
             var (body, problem) = await ReadGraph(request, "check").ConfigureAwait(false);
             return body is null ? Bad(problem)
-                : editor.Check(body.Name, body.Graph!.Value.GetRawText(), out var refusal) is { } problems ? ApiEndpoints.Json(new { Problems = problems })
+                : editor.Check(body.Name, body.Graph!.Value.GetRawText(), out var refusal) is { } check ? ApiEndpoints.Json(check)
                 : ApiEndpoints.Error(StatusCodes.Status400BadRequest, refusal);
         });
         api.MapPut("/graphs/{name}", async (string name, HttpRequest request) =>

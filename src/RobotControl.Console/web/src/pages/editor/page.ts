@@ -38,9 +38,11 @@ export function editorPage(root: HTMLElement): () => void {
   let checkTimer = 0;
   let run: RunView | null = null;
   const history = new History(emptyGraph(null), () => changed());
-  const portsOf = (name: string): NodePorts | null => name === robotInstance
+  // A node's ports: as the last check created the instance with its settings, else the type's with default settings.
+  let instancePorts: Record<string, NodePorts> = {};
+  const portsOf = (name: string): NodePorts | null => instancePorts[name] ?? (name === robotInstance
     ? catalog.robot
-    : catalog.types.find((t) => t.name === history.graph.instances.find((i) => i.name === name)?.type)?.ports ?? null;
+    : null) ?? catalog.types.find((t) => t.name === history.graph.instances.find((i) => i.name === name)?.type)?.ports ?? null;
   const canvas = new GraphCanvas(canvasBox, history, portsOf, (s) => { selection = s; side(); });
 
   function changed(): void {
@@ -61,9 +63,14 @@ export function editorPage(root: HTMLElement): () => void {
 
   async function check(): Promise<void> {
     const mine = checking;
-    const reply = await api<{ problems: Problem[] }>('POST', '/editor/check', { name: fileName.value, graph: toFile(history.graph) }).catch((e: ApiError) => ({ problems: [{ path: '$', message: e.message }] }));
+    const reply = await api<{ problems: Problem[]; ports: Record<string, NodePorts> }>('POST', '/editor/check', { name: fileName.value, graph: toFile(history.graph) })
+      .catch((e: ApiError) => ({ problems: [{ path: '$', message: e.message }], ports: instancePorts }));
     if (mine !== checking) return;
     problems = reply.problems;
+    if (JSON.stringify(reply.ports) !== JSON.stringify(instancePorts)) {
+      instancePorts = reply.ports;
+      canvas.render();
+    }
     decorate();
     side();
     start.disabled = problems.length > 0;
