@@ -61,6 +61,11 @@ internal static class EditorCatalog
             return ports;
         }
 
+        if (robot is not null)
+        {
+            ports[RobotNode.InstanceName] = Ports(new RobotNode(robot, TimeProvider.System, baseDirectory));
+        }
+
         if (!root.TryGetProperty("instances", out var instances) || instances.ValueKind != JsonValueKind.Array)
         {
             return ports;

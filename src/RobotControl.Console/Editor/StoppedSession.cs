@@ -22,7 +22,7 @@ internal sealed class StoppedSession : IConsoleSession
 
     public IReadOnlyList<ControllerView> Controllers => [];
 
-    public SignalRing Signals { get; } = new([], [], 1);
+    public SignalRing Signals { get; } = new([], [], 2);
 
     public IReadOnlyList<ComponentTiming> Timings => [];
 

@@ -116,6 +116,23 @@ public sealed class GraphEndpointTests(EditorFixture console)
         Assert.Contains("cycle without a delayed wire", problem.GetProperty("message").GetString());
     }
 
+    [Fact]
+    public async Task Start_runs_the_graph_behind_the_same_session_and_stop_turns_it_off()
+    {
+        var run = await console.Runner.StartAsync(Path.Combine(console.Graphs, EditorFixture.HandWritten));
+        Assert.True(run.Running, run.Problem);
+        Assert.Equal(EditorFixture.HandWritten, Path.GetFileName(console.Session.Status.Graph));
+        Assert.Contains("touch_right.x", console.Session.Signals.Names);
+        Assert.DoesNotContain("touch_left.x", console.Session.Signals.Names);
+
+        run = await console.Runner.StopAsync();
+        Assert.False(run.Running);
+        Assert.Equal("stopped", console.Session.Status.Session);
+        Assert.False(console.Session.Status.TorqueOn);
+        using var http = console.Client("stopped");
+        Assert.Empty(await http.GetFromJsonAsync<JsonElement[]>("api/controllers") ?? []);
+    }
+
     /// <summary>The one-arm graph with an out-of-range ratio and a feedback wire no longer delayed.</summary>
     private string BrokenGraph()
     {

@@ -2,7 +2,7 @@
 // stays the one source of truth and every change re-renders from it.
 import Drawflow, { type ConnectionEvent } from 'drawflow';
 import 'drawflow/dist/drawflow.min.css';
-import { type GraphModel, type History, type NodePorts, type Problem, instanceOf, portOf, robotInstance } from './model';
+import { type GraphModel, type History, type NodePorts, type Problem, depths, instanceOf, portOf, robotInstance } from './model';
 
 export type Selection = { node: string } | { wire: number } | null;
 
@@ -60,6 +60,17 @@ export class GraphCanvas {
     } finally {
       this.rendering = false;
     }
+  }
+
+  /** Renders once no wire or node is being dragged (a render mid-drag would drop it). */
+  renderWhenIdle(then: () => void): void {
+    const df = this.df as unknown as { connection: boolean; drag: boolean };
+    if (df.connection || df.drag) {
+      setTimeout(() => this.renderWhenIdle(then), 50);
+      return;
+    }
+    this.render();
+    then();
   }
 
   /** The SVG of wire <paramref name="index"/>, if drawn. */
@@ -124,6 +135,36 @@ export class GraphCanvas {
     });
   }
 
+  /**
+   * Places the nodes that have no position (a graph file without layout): columns by distance from a source, each
+   * as wide as its widest node, the robot last; measured on the drawn nodes. Returns true when it moved any.
+   */
+  layOut(): boolean {
+    const g = this.graph;
+    const missing = g.instances.filter((i) => !Number.isFinite(i.x) || !Number.isFinite(i.y));
+    const robotMissing = g.robot !== null && (!Number.isFinite(g.robotX) || !Number.isFinite(g.robotY));
+    if (missing.length === 0 && !robotMissing) return false;
+    const depth = depths(g);
+    const size = (name: string) => ({ w: this.nodeElement(name)?.offsetWidth ?? 200, h: this.nodeElement(name)?.offsetHeight ?? 100 });
+    const columns = Math.max(0, ...depth.values()) + 1;
+    const width = Array.from({ length: columns }, (_, c) => Math.max(0, ...g.instances.filter((i) => depth.get(i.name) === c).map((i) => size(i.name).w)));
+    const left = width.reduce<number[]>((xs, w, c) => [...xs, xs[c] + w + 70], [40]);
+    const top = new Array<number>(columns).fill(40);
+    for (const i of g.instances) {
+      const c = depth.get(i.name)!;
+      if (missing.includes(i)) {
+        i.x = left[c];
+        i.y = top[c];
+      }
+      top[c] = Math.max(top[c], i.y + size(i.name).h + 40);
+    }
+    if (robotMissing) {
+      g.robotX = left[columns];
+      g.robotY = 40;
+    }
+    return true;
+  }
+
   /** Scales and moves the view so every node shows. */
   fit(): void {
     const nodes = [...this.container.querySelectorAll<HTMLElement>('.drawflow-node')];
@@ -139,6 +180,15 @@ export class GraphCanvas {
     this.df.canvas_y = margin - minY * this.df.zoom;
     this.df.precanvas.style.transform = `translate(${this.df.canvas_x}px, ${this.df.canvas_y}px) scale(${this.df.zoom})`;
     (this.df as unknown as { zoom_last_value: number }).zoom_last_value = this.df.zoom;
+  }
+
+  /** Back to zoom 1 with the canvas origin at the top left (a new graph). */
+  resetView(): void {
+    this.df.zoom = 1;
+    this.df.canvas_x = 0;
+    this.df.canvas_y = 0;
+    this.df.precanvas.style.transform = 'translate(0px, 0px) scale(1)';
+    (this.df as unknown as { zoom_last_value: number }).zoom_last_value = 1;
   }
 
   /** Canvas coordinates of a point on the screen (for dropping from the palette). */
@@ -237,5 +287,6 @@ export class GraphCanvas {
 export function formatValue(v: number): string {
   if (!Number.isFinite(v)) return String(v);
   const a = Math.abs(v);
+  if (a < 1e-9) return '0.000';
   return a !== 0 && (a < 0.01 || a >= 1e5) ? v.toExponential(2) : v.toFixed(a < 10 ? 3 : a < 1000 ? 2 : 0);
 }

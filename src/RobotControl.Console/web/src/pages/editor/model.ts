@@ -19,14 +19,17 @@ export interface GraphModel {
 export const robotInstance = 'robot';
 
 export function emptyGraph(robot: string | null): GraphModel {
-  return { robot, transport: 'virtual', loopRateHz: 1000, robotX: 1200, robotY: 20, instances: [], wires: [] };
+  return { robot, transport: 'virtual', loopRateHz: 1000, robotX: 1240, robotY: 20, instances: [], wires: [] };
 }
 
 /** The graph file text of the model (the server writes it again with the loader's writer when saving). */
 export function toFile(g: GraphModel): Record<string, unknown> {
   const layout: Record<string, { x: number; y: number }> = {};
-  for (const i of g.instances) layout[i.name] = { x: Math.round(i.x), y: Math.round(i.y) };
-  if (g.robot !== null) layout[robotInstance] = { x: Math.round(g.robotX), y: Math.round(g.robotY) };
+  const place = (name: string, x: number, y: number) => {
+    if (Number.isFinite(x) && Number.isFinite(y)) layout[name] = { x: Math.round(x), y: Math.round(y) };
+  };
+  for (const i of g.instances) place(i.name, i.x, i.y);
+  if (g.robot !== null) place(robotInstance, g.robotX, g.robotY);
   return {
     schema: 'robotcontrol/graph/1',
     ...(g.robot === null ? {} : { robot: g.robot }),
@@ -38,7 +41,7 @@ export function toFile(g: GraphModel): Record<string, unknown> {
   };
 }
 
-/** Reads a graph file; instances without a position are laid out in columns by how far they are from a source. */
+/** Reads a graph file; instances without a position keep NaN until the canvas lays them out. */
 export function fromFile(file: Record<string, unknown>): GraphModel {
   const layout = (file.layout ?? {}) as Record<string, { x: number; y: number }>;
   const instances = ((file.instances ?? []) as { name: string; type: string; settings?: Record<string, unknown> }[])
@@ -48,11 +51,11 @@ export function fromFile(file: Record<string, unknown>): GraphModel {
     robot: (file.robot as string | undefined) ?? null, transport: (file.transport as string | undefined) ?? 'virtual',
     loopRateHz: (file.loop_rate_hz as number | undefined) ?? 1000, robotX: layout.robot?.x ?? NaN, robotY: layout.robot?.y ?? NaN, instances, wires,
   };
-  autoLayout(g);
   return g;
 }
 
-function autoLayout(g: GraphModel): void {
+/** How many non-delayed wires lie between each instance and a source (its column when laid out). */
+export function depths(g: GraphModel): Map<string, number> {
   const depth = new Map<string, number>(g.instances.map((i) => [i.name, 0]));
   for (let pass = 0; pass < g.instances.length; pass++) {
     for (const w of g.wires.filter((x) => !x.delayed)) {
@@ -61,19 +64,7 @@ function autoLayout(g: GraphModel): void {
       if (depth.has(from) && depth.has(to)) depth.set(to, Math.max(depth.get(to)!, depth.get(from)! + 1));
     }
   }
-  const rows = new Map<number, number>();
-  for (const i of g.instances) {
-    if (Number.isFinite(i.x) && Number.isFinite(i.y)) continue;
-    const column = depth.get(i.name)!;
-    const row = rows.get(column) ?? 0;
-    rows.set(column, row + 1);
-    i.x = 40 + column * 300;
-    i.y = 40 + row * 260;
-  }
-  if (!Number.isFinite(g.robotX) || !Number.isFinite(g.robotY)) {
-    g.robotX = 40 + (Math.max(0, ...depth.values()) + 1) * 300;
-    g.robotY = 40;
-  }
+  return depth;
 }
 
 export function instanceOf(signal: string): string {

@@ -6,7 +6,7 @@ import { el, button } from '../../dom';
 import { SignalStream } from '../../stream';
 import { GraphCanvas, type Selection } from './canvas';
 import { type Catalog, type NodePorts, type Problem, History, emptyGraph, freshName, fromFile, robotInstance, toFile } from './model';
-import { renderSide } from './side';
+import { markFields, renderSide } from './side';
 import './editor.css';
 
 interface RunView { running: boolean; graph: string | null; transport: string; problem: string | null }
@@ -58,6 +58,7 @@ export function editorPage(root: HTMLElement): () => void {
     clearTimeout(checkTimer);
     checking++;
     start.disabled = true;
+    delete problemList.dataset.count;
     checkTimer = window.setTimeout(() => void check(), 150);
   }
 
@@ -67,13 +68,16 @@ export function editorPage(root: HTMLElement): () => void {
       .catch((e: ApiError) => ({ problems: [{ path: '$', message: e.message }], ports: instancePorts }));
     if (mine !== checking) return;
     problems = reply.problems;
+    const editing = pane.contains(document.activeElement);
     if (JSON.stringify(reply.ports) !== JSON.stringify(instancePorts)) {
       instancePorts = reply.ports;
-      canvas.render();
+      canvas.renderWhenIdle(decorate);
     }
     decorate();
-    side();
+    // Rebuilding the pane under the user's cursor would drop what they type: then only mark the fields.
+    if (editing) markFields(pane, selection, history.graph, problems); else side();
     start.disabled = problems.length > 0;
+    problemList.dataset.count = String(problems.length); // set once the server has checked this version
     start.title = problems.length > 0 ? 'fix the problems first' : 'save and run this graph';
     canvasBox.dataset.checked = String(mine);
   }
@@ -82,7 +86,6 @@ export function editorPage(root: HTMLElement): () => void {
     const rest = canvas.decorate(problems);
     problemList.replaceChildren(el('h3', {}, problems.length === 0 ? 'No problems' : `${problems.length} problem${problems.length === 1 ? '' : 's'}`),
       ...problems.map((p) => el('div', { class: rest.includes(p) ? 'problem' : 'problem placed' }, `${p.path}: ${p.message}`)));
-    problemList.dataset.count = String(problems.length);
   }
 
   function side(): void {
@@ -96,6 +99,7 @@ export function editorPage(root: HTMLElement): () => void {
   function fresh(): void {
     selection = null;
     fileName.value = 'untitled.json';
+    canvas.resetView();
     history.reset(emptyGraph(catalog.robotFile));
   }
 
@@ -106,6 +110,8 @@ export function editorPage(root: HTMLElement): () => void {
       selection = null;
       fileName.value = name;
       history.reset(fromFile(file));
+      await check(); // each instance's ports, so the nodes are drawn at their size before they are laid out
+      if (canvas.layOut()) history.reset(history.graph);
       canvas.fit();
       return { message: `loaded ${name}` };
     });
@@ -136,12 +142,14 @@ export function editorPage(root: HTMLElement): () => void {
   }
 
   // Live values: while the edited file runs, every output of the graph streams from the session's signal ring.
+  // A socket streams the ring of the session it connected to: each started graph gets a new socket.
   let latest: Map<string, number> | null = null;
-  const stream = new SignalStream((names, frame) => {
-    const last = frame.v[frame.v.length - 1];
-    if (!last) return;
-    latest = new Map(names.map((n, i) => [n, last[i]]));
-  }, 20);
+  let stream: SignalStream | null = null;
+  const onFrame = (names: string[], frame: { t: number[]; v: number[][] }) => {
+    // One column per signal: the newest value of each is the column's last.
+    if (frame.t.length === 0) return;
+    latest = new Map(names.map((n, i) => [n, frame.v[i][frame.v[i].length - 1]]));
+  };
   let subscribed = '';
   const paint = setInterval(() => canvas.showLive(run?.running && run.graph === fileName.value.trim() ? latest : null), 100);
 
@@ -150,12 +158,18 @@ export function editorPage(root: HTMLElement): () => void {
     runState.textContent = run.running ? `running ${run.graph} on ${run.transport}` : run.problem ? `stopped: ${run.problem}` : 'stopped';
     runState.dataset.running = String(run.running);
     stop.disabled = !run.running;
+    if (!run.running) canvas.showLive(null);
     const key = run.running ? `${run.graph}` : '';
     if (key !== subscribed) {
       subscribed = key;
       latest = null;
-      const signals = run.running ? await api<{ name: string }[]>('GET', '/signals') : [];
-      stream.subscribe(signals.map((s) => s.name));
+      stream?.close();
+      stream = null;
+      if (run.running) {
+        const signals = await api<{ name: string }[]>('GET', '/signals');
+        stream = new SignalStream(onFrame, 20);
+        stream.subscribe(signals.map((s) => s.name));
+      }
     }
   }
   const runTimer = setInterval(() => void refreshRun().catch(() => undefined), 1000);
@@ -230,7 +244,7 @@ export function editorPage(root: HTMLElement): () => void {
     clearInterval(paint);
     clearInterval(runTimer);
     clearTimeout(checkTimer);
-    stream.close();
+    stream?.close();
     document.removeEventListener('keydown', onKey);
   };
 }

@@ -7,7 +7,8 @@ import { type Catalog, type GraphModel, type History, type Problem, type Setting
 export function renderSide(root: HTMLElement, s: Selection, history: History, catalog: Catalog, problems: Problem[], reselect: (s: Selection) => void): void {
   const g = history.graph;
   if (s && 'node' in s && s.node === robotInstance) {
-    root.replaceChildren(el('h3', {}, 'robot'), el('p', { class: 'hint' }, `The robot's node (${g.robot ?? ''}): its inputs drive the joints, its outputs report the robot.`));
+    root.replaceChildren(el('h3', {}, 'robot'), el('p', { class: 'hint' }, `The robot's node (${g.robot ?? ''}): its inputs drive the joints, its outputs report the robot.`),
+      ...wires(g, robotInstance, history));
   } else if (s && 'node' in s) {
     const i = g.instances.find((x) => x.name === s.node);
     const type = catalog.types.find((t) => t.name === i?.type);
@@ -95,4 +96,15 @@ function wires(g: GraphModel, name: string, history: History): HTMLElement[] {
     box.addEventListener('change', () => history.change((m) => { m.wires[index].delayed = box.checked; }));
     return el('label', { class: `check mono${w.delayed ? ' delayed' : ''}` }, box, el('span', {}, `${w.from} → ${w.to}`));
   }))];
+}
+
+/** Marks the picked node's setting fields that have a problem (without rebuilding the pane). */
+export function markFields(root: HTMLElement, s: Selection, g: GraphModel, problems: Problem[]): void {
+  const index = s && 'node' in s ? g.instances.findIndex((i) => i.name === s.node) : -1;
+  root.querySelectorAll<HTMLElement>('[data-setting]').forEach((input) => {
+    const problem = problems.find((p) => index >= 0 && p.path === `$.instances[${index}].settings.${input.dataset.setting}`);
+    const label = input.closest('label')!;
+    label.classList.toggle('bad', problem !== undefined);
+    label.title = problem ? `${problem.path}: ${problem.message}` : '';
+  });
 }
