@@ -15,8 +15,7 @@ public sealed class EditorFixture : IAsyncLifetime
 {
     public const string HandWritten = "teleop-lb-right.json";
 
-    private IPlaywright? _playwright;
-    private IBrowser? _browser;
+    private HeadlessChromium? _chromium;
 
     public string Root { get; } = Path.Combine(Path.GetTempPath(), $"rc-editor-{Guid.NewGuid():N}");
 
@@ -28,7 +27,7 @@ public sealed class EditorFixture : IAsyncLifetime
 
     public ConsoleServer Server { get; private set; } = null!;
 
-    public IBrowser Browser => _browser ?? throw new InvalidOperationException("no browser");
+    public IBrowser Browser => _chromium?.Browser ?? throw new InvalidOperationException("no browser");
 
     public async Task InitializeAsync()
     {
@@ -45,18 +44,16 @@ public sealed class EditorFixture : IAsyncLifetime
         Runner = new GraphRunner(Session, options.GraphPath, first.Transport, path => new HeadlessSession(options with { GraphPath = path }));
         var editor = new GraphEditor(new GraphFolder(Graphs), options.Catalog, Runner);
         Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null, editor: editor);
-        _playwright = await Playwright.CreateAsync();
-        _browser = await ConsoleFixture.LaunchChromiumAsync(_playwright);
+        _chromium = await HeadlessChromium.LaunchAsync();
     }
 
     public async Task DisposeAsync()
     {
-        if (_browser is not null)
+        if (_chromium is not null)
         {
-            await _browser.DisposeAsync();
+            await _chromium.DisposeAsync();
         }
 
-        _playwright?.Dispose();
         await Server.DisposeAsync();
         Session.Dispose();
         Runner.Dispose();

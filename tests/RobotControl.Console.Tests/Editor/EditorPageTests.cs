@@ -67,7 +67,7 @@ public sealed class EditorPageTests(EditorFixture console)
         Assert.Equal(3 + 1, await page.Locator(".connection.delayed").CountAsync());
         await page.GetByTestId("file-name").FillAsync("built-in-editor.json");
         await page.GetByTestId("save").ClickAsync();
-        await Expect(page, "#message.ok", "saved built-in-editor.json");
+        await page.Locator("#message.ok").Filter(new() { HasTextString = "saved built-in-editor.json" }).WaitForAsync();
         await Close(page);
 
         var built = Report("built-in-editor.json");
@@ -213,17 +213,5 @@ public sealed class EditorPageTests(EditorFixture console)
     {
         await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client') } })");
         await page.CloseAsync();
-    }
-
-    private static async Task Expect(IPage page, string selector, string text)
-    {
-        try
-        {
-            await page.Locator(selector).Filter(new() { HasTextRegex = new Regex(Regex.Escape(text)) }).First.WaitForAsync(new() { Timeout = 15000 });
-        }
-        catch (TimeoutException)
-        {
-            Assert.Fail($"no {selector} saying \"{text}\"; the message line says \"{await page.Locator("#message").TextContentAsync()}\"");
-        }
     }
 }
