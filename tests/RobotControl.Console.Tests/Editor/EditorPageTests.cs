@@ -200,7 +200,7 @@ public sealed class EditorPageTests(EditorFixture console)
         return JsonSerializer.Deserialize<JsonElement>(json.ToJsonString());
     }
 
-    private async Task<IPage> Open(int width = 2400, int height = 1400)
+    private async Task<IPage> Open(int width = 2560, int height = 1440)
     {
         var page = await console.Browser.NewPageAsync(new() { ViewportSize = new() { Width = width, Height = height } });
         await page.GotoAsync(new Uri(console.Server.BaseUrl, "#editor").ToString());

@@ -145,7 +145,10 @@ export class GraphCanvas {
     const robotMissing = g.robot !== null && (!Number.isFinite(g.robotX) || !Number.isFinite(g.robotY));
     if (missing.length === 0 && !robotMissing) return false;
     const depth = depths(g);
-    const size = (name: string) => ({ w: this.nodeElement(name)?.offsetWidth ?? 200, h: this.nodeElement(name)?.offsetHeight ?? 100 });
+    this.container.classList.add('sizing'); // measure with room for live values
+    const sizes = new Map([...this.ids.keys()].map((name) => [name, { w: this.nodeElement(name)?.offsetWidth ?? 200, h: this.nodeElement(name)?.offsetHeight ?? 100 }]));
+    this.container.classList.remove('sizing');
+    const size = (name: string) => sizes.get(name)!;
     const columns = Math.max(0, ...depth.values()) + 1;
     const width = Array.from({ length: columns }, (_, c) => Math.max(0, ...g.instances.filter((i) => depth.get(i.name) === c).map((i) => size(i.name).w)));
     const left = width.reduce<number[]>((xs, w, c) => [...xs, xs[c] + w + 70], [40]);
@@ -169,10 +172,12 @@ export class GraphCanvas {
   fit(): void {
     const nodes = [...this.container.querySelectorAll<HTMLElement>('.drawflow-node')];
     if (nodes.length === 0) return;
+    this.container.classList.add('sizing'); // as wide as they are with live values
     const minX = Math.min(...nodes.map((n) => n.offsetLeft));
     const minY = Math.min(...nodes.map((n) => n.offsetTop));
     const maxX = Math.max(...nodes.map((n) => n.offsetLeft + n.offsetWidth));
     const maxY = Math.max(...nodes.map((n) => n.offsetTop + n.offsetHeight));
+    this.container.classList.remove('sizing');
     const margin = 24;
     const zoom = Math.min(1, (this.container.clientWidth - 2 * margin) / (maxX - minX), (this.container.clientHeight - 2 * margin) / (maxY - minY));
     this.df.zoom = Math.max(0.3, zoom);

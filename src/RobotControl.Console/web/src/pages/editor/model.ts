@@ -19,7 +19,7 @@ export interface GraphModel {
 export const robotInstance = 'robot';
 
 export function emptyGraph(robot: string | null): GraphModel {
-  return { robot, transport: 'virtual', loopRateHz: 1000, robotX: 1240, robotY: 20, instances: [], wires: [] };
+  return { robot, transport: 'virtual', loopRateHz: 1000, robotX: 1380, robotY: 20, instances: [], wires: [] };
 }
 
 /** The graph file text of the model (the server writes it again with the loader's writer when saving). */

@@ -203,7 +203,7 @@ export function editorPage(root: HTMLElement): () => void {
     // Without a drop point: the next free cell of a 4-column grid of the view (the robot sits right of it).
     const n = g.instances.length;
     const box = canvasBox.getBoundingClientRect();
-    const spot = at ?? canvas.toCanvas(box.left + 30 + (n % 4) * 290, box.top + 20 + Math.floor(n / 4) * 400);
+    const spot = at ?? canvas.toCanvas(box.left + 30 + (n % 4) * 330, box.top + 20 + Math.floor(n / 4) * 400);
     history.change((m) => m.instances.push({ name, type, settings: {}, x: spot.x, y: spot.y }));
     selection = { node: name };
     canvas.pick(selection);
