@@ -16,15 +16,13 @@ public sealed class ConsoleFixture : IAsyncLifetime
 {
     public const string ChromiumPath = "/usr/bin/chromium";
 
-    private IPlaywright? _playwright;
+    private HeadlessChromium? _chromium;
 
     public HeadlessSession Session { get; private set; } = null!;
 
     public ConsoleServer Server { get; private set; } = null!;
 
-    public IBrowser Browser => _browser ?? throw new InvalidOperationException("no browser");
-
-    private IBrowser? _browser;
+    public IBrowser Browser => _chromium?.Browser ?? throw new InvalidOperationException("no browser");
 
     public static string RepoRoot
     {
@@ -46,8 +44,12 @@ public sealed class ConsoleFixture : IAsyncLifetime
     {
         Session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = Path.Combine(RepoRoot, "graphs", "teleop-lb.json"), Catalog = Catalog(), Virtual = true });
         Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null);
-        _playwright = await Playwright.CreateAsync();
-        _browser = await _playwright.Chromium.LaunchAsync(new BrowserTypeLaunchOptions
+        _chromium = await HeadlessChromium.LaunchAsync();
+    }
+
+    /// <summary>Debian's headless Chromium with WebGL through SwiftShader.</summary>
+    public static Task<IBrowser> LaunchChromiumAsync(IPlaywright playwright) =>
+        playwright.Chromium.LaunchAsync(new BrowserTypeLaunchOptions
         {
             ExecutablePath = ChromiumPath,
             Headless = true,
@@ -57,16 +59,14 @@ public sealed class ConsoleFixture : IAsyncLifetime
                 "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
             ],
         });
-    }
 
     public async Task DisposeAsync()
     {
-        if (_browser is not null)
+        if (_chromium is not null)
         {
-            await _browser.DisposeAsync();
+            await _chromium.DisposeAsync();
         }
 
-        _playwright?.Dispose();
         await Server.DisposeAsync();
         Session.Dispose();
     }

@@ -43,12 +43,7 @@ internal static class ApiEndpoints
 
         api.MapPost("/controllers/{id:int}/reload", async (int id) => Result(await session.ReloadParametersAsync(id).ConfigureAwait(false)));
 
-        var actions = api.MapGroup(string.Empty).AddEndpointFilter(async (context, next) =>
-            role.IsHeldBy(ClientOf(context.HttpContext))
-                ? await next(context).ConfigureAwait(false)
-                : Error(StatusCodes.Status403Forbidden, role.Holder is null
-                    ? "this action needs the operator role: take it first (POST /api/operator)"
-                    : "another console holds the operator role; this one watches"));
+        var actions = OperatorOnly(api.MapGroup(string.Empty), role);
         actions.MapPost("/discover", async () => Result(await session.DiscoverAsync().ConfigureAwait(false)));
         actions.MapPost("/torque", async (HttpRequest request) =>
         {
@@ -95,6 +90,18 @@ internal static class ApiEndpoints
         return value.Length is > 0 and <= 64 ? value : null;
     }
 
+    /// <summary>Lets <paramref name="group"/>'s requests through only from the operator's console (403 otherwise).</summary>
+    public static RouteGroupBuilder OperatorOnly(RouteGroupBuilder group, OperatorRole role)
+    {
+        group.AddEndpointFilter(async (context, next) =>
+            role.IsHeldBy(ClientOf(context.HttpContext))
+                ? await next(context).ConfigureAwait(false)
+                : Error(StatusCodes.Status403Forbidden, role.Holder is null
+                    ? "this action needs the operator role: take it first (POST /api/operator)"
+                    : "another console holds the operator role; this one watches"));
+        return group;
+    }
+
     private static object OperatorView(HttpContext http, OperatorRole role)
     {
         var holder = role.Holder;
@@ -102,9 +109,9 @@ internal static class ApiEndpoints
         return new { Held = holder is not null, You = client is not null && holder == client };
     }
 
-    private static IResult Json(object value) => Results.Json(value, ConsoleJson.Options);
+    internal static IResult Json(object value) => Results.Json(value, ConsoleJson.Options);
 
-    private static IResult Error(int status, string message, IReadOnlyList<string>? details = null) =>
+    internal static IResult Error(int status, string message, IReadOnlyList<string>? details = null) =>
         Results.Json(new ApiError(message, details), ConsoleJson.Options, statusCode: status);
 
     private static IResult Result(CommandResult result) => result.Outcome switch

@@ -38,9 +38,9 @@ public sealed class ConsoleServer : IAsyncDisposable
 
     /// <summary>
     /// Starts serving <paramref name="session"/> on <paramref name="bind"/>. A non-loopback bind without
-    /// <paramref name="token"/> gets a generated one.
+    /// <paramref name="token"/> gets a generated one. With <paramref name="editor"/>, the graph editor's API too.
     /// </summary>
-    public static async Task<ConsoleServer> StartAsync(IConsoleSession session, BindAddress bind, string? token, TimeProvider? time = null)
+    public static async Task<ConsoleServer> StartAsync(IConsoleSession session, BindAddress bind, string? token, TimeProvider? time = null, Editor.GraphEditor? editor = null)
     {
         ArgumentNullException.ThrowIfNull(session);
         ArgumentNullException.ThrowIfNull(bind);
@@ -60,6 +60,11 @@ public sealed class ConsoleServer : IAsyncDisposable
         app.Use(access.Invoke);
         ApiEndpoints.Map(app, session, server.Operator);
         StreamEndpoint.Map(app, session);
+        if (editor is not null)
+        {
+            GraphEndpoints.Map(app, editor, server.Operator);
+        }
+
         var assets = new StaticAssets();
         app.MapGet("/{**path}", (Microsoft.AspNetCore.Http.HttpContext http, string? path) => assets.Serve(http, path));
         await app.StartAsync().ConfigureAwait(false);

@@ -22,6 +22,9 @@ public sealed record GraphDocument(
     /// <summary>The schema identifier graph files carry.</summary>
     public const string Schema = "robotcontrol/graph/1";
 
+    /// <summary>The graph editor's node positions by instance name (editor-only; null: none).</summary>
+    public IReadOnlyDictionary<string, NodePosition>? Layout { get; init; }
+
     /// <summary>The default loop rate.</summary>
     public const double DefaultLoopRateHz = 1000.0;
 }

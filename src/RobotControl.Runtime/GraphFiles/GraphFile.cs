@@ -20,15 +20,17 @@ namespace RobotControl.Runtime.GraphFiles;
 ///   "loop_rate_hz": 1000,
 ///   "instances": [ { "name": "clutch_right", "type": "clutch", "settings": { ... } } ],
 ///   "wires": [ { "from": "scaling_right.x", "to": "clutch_right.x" },
-///              { "from": "walls_right.fx", "to": "touch_right.force_x", "delayed": true } ] }
+///              { "from": "walls_right.fx", "to": "touch_right.force_x", "delayed": true } ],
+///   "layout": { "clutch_right": { "x": 420, "y": 80 } } }
 /// </code>
+/// <c>layout</c> is optional and editor-only (the graph editor's node positions, <see cref="GraphLayout"/>).
 /// Loading validates everything (unknown type, unknown or mistyped signal, duplicate name, bad setting, cycle) and
 /// reports every problem with its JSON path in one <see cref="GraphException"/>; nothing is half-applied.
 /// </summary>
 public static class GraphFile
 {
     private static readonly JsonDocumentOptions DocumentOptions = new() { CommentHandling = JsonCommentHandling.Skip };
-    private static readonly string[] TopLevel = ["schema", "robot", "transport", "loop_rate_hz", "instances", "wires"];
+    private static readonly string[] TopLevel = ["schema", "robot", "transport", "loop_rate_hz", "instances", "wires", GraphLayout.Field];
 
     /// <summary>Loads, builds and compiles the graph in <paramref name="path"/>.</summary>
     /// <exception cref="GraphException">Every problem found, with JSON paths.</exception>
@@ -156,6 +158,11 @@ public static class GraphFile
             }
 
             writer.WriteEndArray();
+            if (document.Layout is { Count: > 0 } layout)
+            {
+                GraphLayout.Write(writer, layout);
+            }
+
             writer.WriteEndObject();
         }
 
@@ -228,6 +235,8 @@ public static class GraphFile
         }
 
         var wires = ReadWires(root, graph, problems, failed);
+        var declaredNames = new HashSet<string>(instances.Select(i => i.Name).Concat(failed), StringComparer.Ordinal);
+        var layout = GraphLayout.Read(root, declaredNames, robot is not null || robotPath is not null, problems);
         if (problems.Problems.Count > 0)
         {
             return null;
@@ -249,7 +258,7 @@ public static class GraphFile
         }
 
         robotNode?.SetDriven(wires.Select(w => w.To));
-        var document = new GraphDocument(robotPath, transport, rate, instances, wires);
+        var document = new GraphDocument(robotPath, transport, rate, instances, wires) { Layout = layout };
         return new LoadedGraph(fullPath, document, robot, robotNode, graph, program);
     }
 

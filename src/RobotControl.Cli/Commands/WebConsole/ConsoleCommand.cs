@@ -5,6 +5,7 @@ using RobotControl.Cli.Options;
 using RobotControl.Host.Session;
 using RobotControl.Runtime.Graph;
 using RobotControl.WebConsole.Adapter;
+using RobotControl.WebConsole.Editor;
 using RobotControl.WebConsole.Server;
 
 namespace RobotControl.Cli.Commands.WebConsole;
@@ -26,7 +27,7 @@ internal sealed class ConsoleCommand : ICliCommand
         var open = new Option<bool>("--open") { Description = "Open the console in a browser window (Chromium's --app mode) when one is installed" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder" };
         var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
-        var command = new Command("console", "Web console: bus and controllers, plots, 3D view and run status of a running session.");
+        var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status and graph editor of a running session.");
         command.Arguments.Add(graph);
         foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed })
         {
@@ -67,6 +68,7 @@ internal sealed class ConsoleCommand : ICliCommand
         }
 
         HeadlessSession session;
+        HeadlessSessionOptions options;
         try
         {
             if (transport is not null)
@@ -74,7 +76,8 @@ internal sealed class ConsoleCommand : ICliCommand
                 TransportOverride.Check(transport);
             }
 
-            session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed });
+            options = new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed };
+            session = new HeadlessSession(options);
         }
         catch (GraphException ex)
         {
@@ -87,12 +90,16 @@ internal sealed class ConsoleCommand : ICliCommand
             return 2;
         }
 
-        using (session)
+        // The graph editor runs the graphs of the folder the given graph is in, on the same robot options.
+        var switchable = new SwitchableSession(session);
+        using var runner = new GraphRunner(switchable, graphPath, session.Transport, path => new HeadlessSession(options with { GraphPath = path }));
+        var editor = new GraphEditor(new GraphFolder(Path.GetDirectoryName(graphPath)!), options.Catalog, runner);
+        using (switchable)
         {
             ConsoleServer server;
             try
             {
-                server = ConsoleServer.StartAsync(session, bind, token).GetAwaiter().GetResult();
+                server = ConsoleServer.StartAsync(switchable, bind, token, editor: editor).GetAwaiter().GetResult();
             }
             catch (Exception ex) when (ex is IOException or FormatException)
             {
@@ -100,7 +107,7 @@ internal sealed class ConsoleCommand : ICliCommand
                 return 2;
             }
 
-            var status = session.Status;
+            var status = switchable.Status;
             output.WriteLine($"console: {status.Robot} on {status.Transport}, {status.ModulesFound} of {status.ModulesConfigured} modules found, loop {status.LoopRateHz:0} Hz");
             output.WriteLine($"console: {server.OpenUrl}");
             if (server.Token is not null && token is null)

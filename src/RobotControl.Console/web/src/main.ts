@@ -11,6 +11,7 @@ const pages: Record<string, () => Promise<Page>> = {
   plots: async () => (await import('./pages/plots')).plotsPage,
   view3d: async () => (await import('./pages/view3d')).view3dPage,
   status: async () => (await import('./pages/status')).statusPage,
+  editor: async () => (await import('./pages/editor/page')).editorPage,
 };
 let leave: (() => void) | null = null;
 let visit = 0;

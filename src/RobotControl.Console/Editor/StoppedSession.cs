@@ -1,0 +1,64 @@
+using RobotControl.WebConsole.Session;
+
+namespace RobotControl.WebConsole.Editor;
+
+/// <summary>
+/// What the pages see after the graph editor stopped the graph: the last status with the session <c>stopped</c>, no
+/// controllers and no signals; every command is refused until a graph starts again.
+/// </summary>
+internal sealed class StoppedSession : IConsoleSession
+{
+    private const string Refusal = "no graph runs: start one from the graph editor";
+    private readonly IReadOnlyList<EventEntry> _events;
+
+    public StoppedSession(SessionStatus last, RobotModelView model, IReadOnlyList<EventEntry> events)
+    {
+        Status = last with { Session = "stopped", TorqueOn = false, RobotState = "INIT", RobotLayer = "Disabled", ModulesFound = 0 };
+        Model = model;
+        _events = events;
+    }
+
+    public SessionStatus Status { get; }
+
+    public IReadOnlyList<ControllerView> Controllers => [];
+
+    public SignalRing Signals { get; } = new([], [], 2);
+
+    public IReadOnlyList<ComponentTiming> Timings => [];
+
+    public RobotModelView Model { get; }
+
+    public IReadOnlyList<EventEntry> EventsAfter(long after) => [.. _events.Where(e => e.Sequence > after)];
+
+    public Task<CommandResult> DiscoverAsync() => Refused();
+
+    public Task<CommandResult> RenameAsync(int controllerId, string name) => Refused();
+
+    public Task<CommandResult> ReloadParametersAsync(int controllerId) => Refused();
+
+    public Task<CommandResult> RebootAsync(int controllerId) => Refused();
+
+    public Task<CommandResult> WriteParameterAsync(string motor, string parameter, double value) => Refused();
+
+    public Task<CommandResult> JogAsync(string motor, double degPerS) => Refused();
+
+    public Task<CommandResult> SetpointAsync(string motor, double deg) => Refused();
+
+    public Task<CommandResult> ReleaseAsync(string motor) => Refused();
+
+    public Task<CommandResult> TorqueAsync(bool on) => Refused();
+
+    public Task<CommandResult> PedalAsync(bool down) => Refused();
+
+    public Task<CommandResult> EmergencyStopAsync() => Task.FromResult(CommandResult.Ok("no graph runs: the motors are off"));
+
+    public Task<CommandResult> HomeAsync(string? motor) => Refused();
+
+    public Task<CommandResult> ClearFaultsAsync() => Refused();
+
+    public void Dispose()
+    {
+    }
+
+    private static Task<CommandResult> Refused() => Task.FromResult(CommandResult.Fail(CommandOutcome.Refused, Refusal));
+}

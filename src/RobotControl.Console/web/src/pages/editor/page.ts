@@ -1,0 +1,250 @@
+// Graph editor page: palette of the catalog's plug-in types, the node canvas (drawflow), the settings pane, problems
+// from the graph-file loader itself (POST /api/editor/check), load/save of the graphs folder, undo/redo, start/stop
+// of the edited graph and live values while it runs.
+import { api, act, ApiError, show } from '../../api';
+import { el, button } from '../../dom';
+import { SignalStream } from '../../stream';
+import { GraphCanvas, type Selection } from './canvas';
+import { type Catalog, type NodePorts, type Problem, History, emptyGraph, freshName, fromFile, robotInstance, toFile } from './model';
+import { markFields, renderSide } from './side';
+import './editor.css';
+
+interface RunView { running: boolean; graph: string | null; transport: string; problem: string | null }
+
+export function editorPage(root: HTMLElement): () => void {
+  const graphs = el('select', { 'data-testid': 'graph-list' });
+  const fileName = el('input', { 'data-testid': 'file-name', value: 'untitled.json', spellcheck: 'false', size: '18' });
+  const undo = button('Undo', () => step(false), { title: 'Ctrl+Z', 'data-testid': 'undo' });
+  const redo = button('Redo', () => step(true), { title: 'Ctrl+Shift+Z', 'data-testid': 'redo' });
+  const start = button('Start', () => void startGraph(), { class: 'primary', 'data-testid': 'start' });
+  const stop = button('Stop', () => void act(async () => { await api('POST', '/editor/stop'); await refreshRun(); return { message: 'stopped: motors off' }; }), { 'data-testid': 'stop' });
+  const runState = el('span', { class: 'run-state', 'data-testid': 'run-state' });
+  const palette = el('aside', { class: 'ged-palette', 'data-testid': 'palette' });
+  const canvasBox = el('div', { class: 'ged-canvas', 'data-testid': 'graph-canvas' });
+  const pane = el('div', { class: 'ged-pane', 'data-testid': 'side-pane' });
+  const problemList = el('div', { class: 'ged-problems', 'data-testid': 'problems' });
+  root.append(el('div', { class: 'ged' },
+    el('div', { class: 'toolbar ged-toolbar' },
+      graphs, button('Load', () => void load(graphs.value), { 'data-testid': 'load' }), button('New', () => fresh(), { 'data-testid': 'new' }),
+      el('span', { class: 'sep' }), fileName, button('Save', () => void save(), { 'data-testid': 'save' }),
+      el('span', { class: 'sep' }), undo, redo, button('Fit', () => canvas.fit()),
+      el('span', { class: 'sep' }), start, stop, runState),
+    el('div', { class: 'ged-main' }, palette, canvasBox, el('aside', { class: 'ged-side' }, pane, problemList))));
+
+  let catalog: Catalog = { types: [], robot: null, robotFile: null, problems: [] };
+  let selection: Selection = null;
+  let problems: Problem[] = [];
+  let checking = 0;
+  let checkTimer = 0;
+  let run: RunView | null = null;
+  const history = new History(emptyGraph(null), () => changed());
+  // A node's ports: as the last check created the instance with its settings, else the type's with default settings.
+  let instancePorts: Record<string, NodePorts> = {};
+  const portsOf = (name: string): NodePorts | null => instancePorts[name] ?? (name === robotInstance
+    ? catalog.robot
+    : null) ?? catalog.types.find((t) => t.name === history.graph.instances.find((i) => i.name === name)?.type)?.ports ?? null;
+  const canvas = new GraphCanvas(canvasBox, history, portsOf, (s) => { selection = s; side(); });
+
+  function changed(): void {
+    if (selection && 'node' in selection && selection.node !== robotInstance && !history.graph.instances.some((i) => i.name === (selection as { node: string }).node)) selection = null;
+    if (selection && 'wire' in selection && !history.graph.wires[selection.wire]) selection = null;
+    canvas.pick(selection);
+    canvas.render();
+    problems = [];
+    decorate();
+    side();
+    undo.disabled = !history.canUndo;
+    redo.disabled = !history.canRedo;
+    clearTimeout(checkTimer);
+    checking++;
+    start.disabled = true;
+    delete problemList.dataset.count;
+    checkTimer = window.setTimeout(() => void check(), 150);
+  }
+
+  async function check(): Promise<void> {
+    const mine = checking;
+    const reply = await api<{ problems: Problem[]; ports: Record<string, NodePorts> }>('POST', '/editor/check', { name: fileName.value, graph: toFile(history.graph) })
+      .catch((e: ApiError) => ({ problems: [{ path: '$', message: e.message }], ports: instancePorts }));
+    if (mine !== checking) return;
+    problems = reply.problems;
+    const editing = pane.contains(document.activeElement);
+    if (JSON.stringify(reply.ports) !== JSON.stringify(instancePorts)) {
+      instancePorts = reply.ports;
+      canvas.renderWhenIdle(decorate);
+    }
+    decorate();
+    // Rebuilding the pane under the user's cursor would drop what they type: then only mark the fields.
+    if (editing) markFields(pane, selection, history.graph, problems); else side();
+    start.disabled = problems.length > 0;
+    problemList.dataset.count = String(problems.length); // set once the server has checked this version
+    start.title = problems.length > 0 ? 'fix the problems first' : 'save and run this graph';
+    canvasBox.dataset.checked = String(mine);
+  }
+
+  function decorate(): void {
+    const rest = canvas.decorate(problems);
+    problemList.replaceChildren(el('h3', {}, problems.length === 0 ? 'No problems' : `${problems.length} problem${problems.length === 1 ? '' : 's'}`),
+      ...problems.map((p) => el('div', { class: rest.includes(p) ? 'problem' : 'problem placed' }, `${p.path}: ${p.message}`)));
+  }
+
+  function side(): void {
+    renderSide(pane, selection, history, catalog, problems, (next) => { selection = next; });
+  }
+
+  function step(forward: boolean): void {
+    if (forward) history.redo(); else history.undo();
+  }
+
+  function fresh(): void {
+    selection = null;
+    fileName.value = 'untitled.json';
+    canvas.resetView();
+    history.reset(emptyGraph(catalog.robotFile));
+  }
+
+  async function load(name: string): Promise<void> {
+    if (!name) return;
+    await act(async () => {
+      const file = await api<Record<string, unknown>>('GET', `/editor/graphs/${encodeURIComponent(name)}`);
+      selection = null;
+      fileName.value = name;
+      history.reset(fromFile(file));
+      await check(); // each instance's ports, so the nodes are drawn at their size before they are laid out
+      if (canvas.layOut()) history.reset(history.graph);
+      canvas.fit();
+      return { message: `loaded ${name}` };
+    });
+  }
+
+  async function save(): Promise<boolean> {
+    return act(async () => {
+      const name = fileName.value.trim();
+      const reply = await api<{ message: string }>('PUT', `/editor/graphs/${encodeURIComponent(name)}`, { graph: toFile(history.graph) });
+      await listGraphs(name);
+      return reply;
+    });
+  }
+
+  async function startGraph(): Promise<void> {
+    await act(async () => {
+      const reply = await api<RunView>('POST', '/editor/start', { name: fileName.value.trim(), graph: toFile(history.graph) });
+      await listGraphs(fileName.value.trim());
+      await refreshRun();
+      return { message: `${reply.graph} runs on ${reply.transport}` };
+    });
+  }
+
+  async function listGraphs(select?: string): Promise<void> {
+    const reply = await api<{ folder: string; graphs: string[] }>('GET', '/editor/graphs');
+    graphs.replaceChildren(...reply.graphs.map((g) => el('option', { value: g }, `${reply.folder}/${g}`)));
+    if (select && reply.graphs.includes(select)) graphs.value = select;
+  }
+
+  // Live values: while the edited file runs, every output of the graph streams from the session's signal ring.
+  // A socket streams the ring of the session it connected to: each started graph gets a new socket.
+  let latest: Map<string, number> | null = null;
+  let stream: SignalStream | null = null;
+  const onFrame = (names: string[], frame: { t: number[]; v: number[][] }) => {
+    // One column per signal: the newest value of each is the column's last.
+    if (frame.t.length === 0) return;
+    latest = new Map(names.map((n, i) => [n, frame.v[i][frame.v[i].length - 1]]));
+  };
+  let subscribed = '';
+  const paint = setInterval(() => canvas.showLive(run?.running && run.graph === fileName.value.trim() ? latest : null), 100);
+
+  async function refreshRun(): Promise<void> {
+    run = await api<RunView>('GET', '/editor/run');
+    runState.textContent = run.running ? `running ${run.graph} on ${run.transport}` : run.problem ? `stopped: ${run.problem}` : 'stopped';
+    runState.dataset.running = String(run.running);
+    stop.disabled = !run.running;
+    if (!run.running) canvas.showLive(null);
+    const key = run.running ? `${run.graph}` : '';
+    if (key !== subscribed) {
+      subscribed = key;
+      latest = null;
+      stream?.close();
+      stream = null;
+      if (run.running) {
+        const signals = await api<{ name: string }[]>('GET', '/signals');
+        stream = new SignalStream(onFrame, 20);
+        stream.subscribe(signals.map((s) => s.name));
+      }
+    }
+  }
+  const runTimer = setInterval(() => void refreshRun().catch(() => undefined), 1000);
+
+  const onKey = (e: KeyboardEvent) => {
+    const typing = e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement || e.target instanceof HTMLTextAreaElement;
+    if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'z' && !typing) {
+      e.preventDefault();
+      step(e.shiftKey);
+    } else if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'y' && !typing) {
+      e.preventDefault();
+      step(true);
+    } else if ((e.key === 'Delete' || e.key === 'Backspace') && !typing && selection) {
+      const s = selection;
+      e.preventDefault();
+      history.change((m) => {
+        if ('wire' in s) m.wires.splice(s.wire, 1);
+        else if (s.node !== robotInstance) {
+          m.instances = m.instances.filter((x) => x.name !== s.node);
+          m.wires = m.wires.filter((w) => !w.from.startsWith(`${s.node}.`) && !w.to.startsWith(`${s.node}.`));
+        }
+      });
+    }
+  };
+  document.addEventListener('keydown', onKey);
+
+  // Palette: click adds a node in view; drag drops it where it lands.
+  function add(type: string, at?: { x: number; y: number }): void {
+    const g = history.graph;
+    const name = freshName(g, type);
+    // Without a drop point: the next free cell of a 4-column grid of the view (the robot sits right of it).
+    const n = g.instances.length;
+    const box = canvasBox.getBoundingClientRect();
+    const spot = at ?? canvas.toCanvas(box.left + 30 + (n % 4) * 330, box.top + 20 + Math.floor(n / 4) * 400);
+    history.change((m) => m.instances.push({ name, type, settings: {}, x: spot.x, y: spot.y }));
+    selection = { node: name };
+    canvas.pick(selection);
+    side();
+  }
+  canvasBox.addEventListener('dragover', (e) => e.preventDefault());
+  canvasBox.addEventListener('drop', (e) => {
+    e.preventDefault();
+    const type = e.dataTransfer?.getData('text/plugin-type');
+    if (type) add(type, canvas.toCanvas(e.clientX, e.clientY));
+  });
+
+  void (async () => {
+    try {
+      catalog = await api<Catalog>('GET', '/editor/catalog');
+      palette.replaceChildren(el('h3', {}, 'Plug-in types'), ...catalog.types.map((t) => {
+        const item = el('button', { type: 'button', class: 'ged-type', draggable: 'true', 'data-type': t.name, title: t.portsProblem ?? t.description },
+          el('strong', {}, t.name), el('small', {}, t.description), el('small', { class: 'origin' }, t.assembly));
+        item.addEventListener('click', () => add(t.name));
+        item.addEventListener('dragstart', (e) => e.dataTransfer?.setData('text/plugin-type', t.name));
+        return item;
+      }), ...catalog.problems.map((p) => el('p', { class: 'problem' }, p)));
+      await listGraphs();
+      await refreshRun();
+      const running = (run as RunView | null)?.graph;
+      if (running) {
+        graphs.value = running;
+        await load(running);
+      } else {
+        fresh();
+      }
+    } catch (e) {
+      show((e as Error).message, true);
+    }
+  })();
+
+  return () => {
+    clearInterval(paint);
+    clearInterval(runTimer);
+    clearTimeout(checkTimer);
+    stream?.close();
+    document.removeEventListener('keydown', onKey);
+  };
+}

@@ -1,0 +1,76 @@
+using Microsoft.Playwright;
+using RobotControl.WebConsole.Adapter;
+using RobotControl.WebConsole.Editor;
+using RobotControl.WebConsole.Server;
+
+namespace RobotControl.WebConsole.Tests.Editor;
+
+/// <summary>
+/// A console with the graph editor on the virtual robot, over a scratch graphs folder (a copy of
+/// graphs/teleop-lb.json and the hand-written one-arm graph; <c>hardware/</c> and the trajectories linked from the
+/// repository, so the graphs' relative paths resolve as in <c>graphs/</c>). Its collection runs alone: a second
+/// virtual robot in real time beside the other console would measure the shared machine.
+/// </summary>
+public sealed class EditorFixture : IAsyncLifetime
+{
+    public const string HandWritten = "teleop-lb-right.json";
+
+    private HeadlessChromium? _chromium;
+
+    public string Root { get; } = Path.Combine(Path.GetTempPath(), $"rc-editor-{Guid.NewGuid():N}");
+
+    public string Graphs => Path.Combine(Root, "graphs");
+
+    public SwitchableSession Session { get; private set; } = null!;
+
+    public GraphRunner Runner { get; private set; } = null!;
+
+    public ConsoleServer Server { get; private set; } = null!;
+
+    public IBrowser Browser => _chromium?.Browser ?? throw new InvalidOperationException("no browser");
+
+    public async Task InitializeAsync()
+    {
+        var repo = ConsoleFixture.RepoRoot;
+        Directory.CreateDirectory(Graphs);
+        Directory.CreateSymbolicLink(Path.Combine(Root, "hardware"), Path.Combine(repo, "hardware"));
+        Directory.CreateSymbolicLink(Path.Combine(Graphs, "trajectories"), Path.Combine(repo, "graphs", "trajectories"));
+        File.Copy(Path.Combine(repo, "graphs", "teleop-lb.json"), Path.Combine(Graphs, "teleop-lb.json"));
+        File.Copy(Path.Combine(repo, "tests", "RobotControl.Console.Tests", "Editor", HandWritten), Path.Combine(Graphs, HandWritten));
+
+        var options = new HeadlessSessionOptions { GraphPath = Path.Combine(Graphs, "teleop-lb.json"), Catalog = ConsoleFixture.Catalog(), Virtual = true };
+        var first = new HeadlessSession(options);
+        Session = new SwitchableSession(first);
+        Runner = new GraphRunner(Session, options.GraphPath, first.Transport, path => new HeadlessSession(options with { GraphPath = path }));
+        var editor = new GraphEditor(new GraphFolder(Graphs), options.Catalog, Runner);
+        Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null, editor: editor);
+        _chromium = await HeadlessChromium.LaunchAsync();
+    }
+
+    public async Task DisposeAsync()
+    {
+        if (_chromium is not null)
+        {
+            await _chromium.DisposeAsync();
+        }
+
+        await Server.DisposeAsync();
+        Session.Dispose();
+        Runner.Dispose();
+        Directory.Delete(Root, recursive: true);
+    }
+
+    /// <summary>An HTTP client that names itself <paramref name="client"/>.</summary>
+    public HttpClient Client(string client)
+    {
+        var http = new HttpClient { BaseAddress = Server.BaseUrl };
+        http.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, client);
+        return http;
+    }
+}
+
+[CollectionDefinition(Name, DisableParallelization = true)]
+public sealed class EditorCollection : ICollectionFixture<EditorFixture>
+{
+    public const string Name = "graph editor on the virtual robot";
+}
