@@ -58,18 +58,21 @@ public sealed partial class HeadlessSession : IConsoleSession
     /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
     /// <exception cref="InvalidOperationException">The graph names no robot, or the transport does not fit.</exception>
     /// <exception cref="IOException">The transport cannot be opened.</exception>
+    /// <exception cref="FormatException">An injected fault is not one the console takes, or names no module.</exception>
     public HeadlessSession(HeadlessSessionOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
         var slot = new ObserverSlot();
+        var faults = new ConsoleFaults(options.Inject, options.Virtual);
         _session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot },
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot, WrapLink = faults.WrapLink },
             options.Catalog);
         _robot = _session.Connection.Definition!;
         _bus = _session.Robot;
         _supervisor = _session.Supervisor;
         _clock = _session.Clock;
         _begin = _clock.GetTimestamp();
+        faults.Schedule(_robot, _begin, _clock.TimestampFrequency);
         _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
         slot.Target = _recorder;
         Transport = options.Virtual ? $"virtual:{Path.GetFileName(_robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;

@@ -86,6 +86,7 @@ internal static class ApiEndpoints
         });
         actions.MapPost("/motors/{motor}/release", async (string motor) => Result(await session.ReleaseAsync(motor).ConfigureAwait(false)));
         actions.MapPost("/motors/{motor}/home", async (string motor) => Result(await session.HomeAsync(motor).ConfigureAwait(false)));
+        SurgeonEndpoints.Map(api, actions, session);
     }
 
     /// <summary>The console named by the request's <see cref="OperatorRole.ClientHeader"/> header, or null.</summary>
@@ -102,12 +103,12 @@ internal static class ApiEndpoints
         return new { Held = holder is not null, You = client is not null && holder == client };
     }
 
-    private static IResult Json(object value) => Results.Json(value, ConsoleJson.Options);
+    internal static IResult Json(object value) => Results.Json(value, ConsoleJson.Options);
 
-    private static IResult Error(int status, string message, IReadOnlyList<string>? details = null) =>
+    internal static IResult Error(int status, string message, IReadOnlyList<string>? details = null) =>
         Results.Json(new ApiError(message, details), ConsoleJson.Options, statusCode: status);
 
-    private static IResult Result(CommandResult result) => result.Outcome switch
+    internal static IResult Result(CommandResult result) => result.Outcome switch
     {
         CommandOutcome.Ok => Json(result),
         CommandOutcome.BadInput => Error(StatusCodes.Status400BadRequest, result.Message, result.Details),

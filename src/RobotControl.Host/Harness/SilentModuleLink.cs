@@ -9,7 +9,7 @@ namespace RobotControl.Host.Harness;
 /// SYNC/BULK READ a silent module's part never comes, and the modules after it, which wait for it, send nothing
 /// either: the packet is cut where that part would start (the part lengths come from the host's request).
 /// </summary>
-internal sealed class SilentModuleLink : IByteLink
+public sealed class SilentModuleLink : IByteLink
 {
     private const int HeaderLength = 7; // FF FF FD 00, ID, length (2)
     private readonly IByteLink _inner;
