@@ -11,6 +11,7 @@ const pages: Record<string, () => Promise<Page>> = {
   plots: async () => (await import('./pages/plots')).plotsPage,
   view3d: async () => (await import('./pages/view3d')).view3dPage,
   status: async () => (await import('./pages/status')).statusPage,
+  surgeon: async () => (await import('./pages/surgeon')).surgeonPage,
 };
 let leave: (() => void) | null = null;
 let visit = 0;
