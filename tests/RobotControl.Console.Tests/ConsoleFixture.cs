@@ -16,6 +16,14 @@ public sealed class ConsoleFixture : IAsyncLifetime
 {
     public const string ChromiumPath = "/usr/bin/chromium";
 
+    /// <summary>Chromium's switches: WebGL through SwiftShader, and Chromium's fake capture device, granted without asking (the surgeon's video panel).</summary>
+    public static readonly string[] ChromiumArgs =
+    [
+        "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+        "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
+        "--use-fake-device-for-media-stream", "--use-fake-ui-for-media-stream",
+    ];
+
     private IPlaywright? _playwright;
 
     public HeadlessSession Session { get; private set; } = null!;
@@ -51,11 +59,7 @@ public sealed class ConsoleFixture : IAsyncLifetime
         {
             ExecutablePath = ChromiumPath,
             Headless = true,
-            Args =
-            [
-                "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
-            ],
+            Args = ChromiumArgs,
         });
     }
 

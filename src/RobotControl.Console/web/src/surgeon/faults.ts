@@ -1,4 +1,4 @@
-import { el, fmt } from '../dom';
+import { el } from '../dom';
 import type { FaultView } from './types';
 
 // Faults in plain words; the raw detail (check, value, limit, action, time) one click away.
@@ -21,7 +21,7 @@ export function faultsPanel(): { element: HTMLElement; show: (faults: FaultView[
       list.replaceChildren(...[...faults].reverse().map((f) => {
         const id = `${f.timeSeconds}-${f.check}-${f.subject}`;
         const detail = el('div', { class: 'fault-detail', 'data-testid': 'fault-detail' },
-          `check ${f.check}${f.subject ? ` · ${f.subject}` : ''} · measured ${fmt(f.measured, 3)} ${f.unit} · limit ${fmt(f.limit, 3)} ${f.unit} · action ${f.action} · at ${fmt(f.timeSeconds, 3)} s`);
+          `check ${f.check}${f.subject ? ` · ${f.subject}` : ''} · measured ${num(f.measured)} ${f.unit} · limit ${num(f.limit)} ${f.unit} · action ${f.action} · at ${num(f.timeSeconds)} s`);
         detail.hidden = !open.has(id);
         const words = el('button', { type: 'button', class: 'fault-words', 'data-testid': 'fault', 'aria-expanded': String(open.has(id)) }, f.words);
         words.addEventListener('click', () => {
@@ -33,4 +33,9 @@ export function faultsPanel(): { element: HTMLElement; show: (faults: FaultView[
       }));
     },
   };
+}
+
+/** Up to three decimals, without trailing zeros. */
+function num(v: number): string {
+  return Number.isFinite(v) ? String(Number(v.toFixed(3))) : String(v);
 }

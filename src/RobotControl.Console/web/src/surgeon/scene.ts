@@ -22,7 +22,7 @@ export class SurgeonScene {
       const colour = armColours[i % armColours.length];
       const geometry = new THREE.BufferGeometry();
       geometry.setAttribute('position', new THREE.Float32BufferAttribute(arm.interior, 3));
-      cloud.add(new THREE.Points(geometry, new THREE.PointsMaterial({ color: colour, size: 0.0025, transparent: true, opacity: 0.16, depthWrite: false })));
+      cloud.add(new THREE.Points(geometry, new THREE.PointsMaterial({ color: colour, size: 0.003, transparent: true, opacity: 0.22, depthWrite: false })));
       this.walls.set(arm.arm, { tool: arm.toolLink, points: Float32Array.from(arm.walls) });
       const tip = this.view.measured?.links[arm.toolLink];
       if (tip) {
@@ -34,7 +34,9 @@ export class SurgeonScene {
       }
     });
     this.view.world.add(cloud);
-    this.view.frame(cloud, new THREE.Vector3(0.05, 0.55, 0.95));
+    this.view.frame(cloud, new THREE.Vector3(0.1, 0.45, 0.62));
+    const size = new THREE.Box3().setFromObject(cloud).getSize(new THREE.Vector3());
+    this.view.grid.scale.setScalar((1.4 * Math.max(size.x, size.y)) / 0.4);
   }
 
   /** Millimetres from the arm's tool tip to the nearest wall sample of its workspace, or null. */
