@@ -72,7 +72,15 @@ public sealed partial class HeadlessSession : IConsoleSession
         _supervisor = _session.Supervisor;
         _clock = _session.Clock;
         _begin = _clock.GetTimestamp();
-        faults.Schedule(_robot, _begin, _clock.TimestampFrequency);
+        try
+        {
+            faults.Schedule(_robot, _begin, _clock.TimestampFrequency);
+        }
+        catch (FormatException)
+        {
+            _session.Dispose();
+            throw;
+        }
         _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
         slot.Target = _recorder;
         Transport = options.Virtual ? $"virtual:{Path.GetFileName(_robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;

@@ -123,14 +123,15 @@ internal sealed class SurgeonHands
 
     /// <summary>The range of the setting named like <paramref name="input"/> of a plug-in (the input's accepted values).</summary>
     private static (double Min, double Max)? Range(Plugin plugin, string input) =>
-        plugin.SettingsObject is { } settings && SettingsSchema.For(settings.GetType()).Settings.FirstOrDefault(s => s.JsonName == input) is { } d
-            ? (d.Minimum, d.Maximum)
-            : null;
+        Setting(plugin, input) is { } d ? (d.Minimum, d.Maximum) : null;
 
     private static double Number(Plugin plugin, string setting) =>
-        plugin.SettingsObject is { } settings && SettingsSchema.For(settings.GetType()).Settings.FirstOrDefault(s => s.JsonName == setting) is { } d
-            ? Convert.ToDouble(d.Property.GetValue(settings), System.Globalization.CultureInfo.InvariantCulture)
+        Setting(plugin, setting) is { } d
+            ? Convert.ToDouble(d.Property.GetValue(plugin.SettingsObject), System.Globalization.CultureInfo.InvariantCulture)
             : 0;
+
+    private static SettingDescriptor? Setting(Plugin plugin, string name) =>
+        plugin.SettingsObject is { } settings ? SettingsSchema.For(settings.GetType()).Settings.FirstOrDefault(s => s.JsonName == name) : null;
 
     /// <summary>One hand.</summary>
     internal sealed record Hand(
