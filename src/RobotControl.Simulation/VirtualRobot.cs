@@ -30,7 +30,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     private readonly NoiseSource _wireNoise;
     private readonly long _physicsStepUs;
     private double _byteUs;
-    private readonly List<(long AtUs, int Module, byte Cause)> _resets = [];
+    private readonly List<ModuleEvent> _resets = []; // module resets and broken transmit lines, by time
     private readonly byte[] _scratch = new byte[4096];
     private const long MaxRealTimeLagUs = 20_000;
     private readonly VirtualRobotOptions _options;
@@ -159,8 +159,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     /// <summary>Resets module <paramref name="moduleId"/> (cause: brown-out, as cautery EMI does) at <paramref name="at"/> after construction.</summary>
     public void ScheduleReset(byte moduleId, TimeSpan at, byte cause = FirmwareHost.ResetBrownOut)
     {
-        _resets.Add(((long)at.TotalMicroseconds, ModuleIndex(moduleId), cause));
-        _resets.Sort((a, b) => a.AtUs.CompareTo(b.AtUs));
+        Schedule(new ModuleEvent((long)at.TotalMicroseconds, ModuleIndex(moduleId), cause));
     }
 
     /// <summary>Switches module <paramref name="moduleId"/> off and on (RAM lost, FRAM kept).</summary>
@@ -210,6 +209,10 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     /// </summary>
     public void BreakTransmitLine(byte moduleId, bool broken = true) =>
         FirmwareHost.Check(FirmwareHost.SetTransmitBroken(_bus, ModuleIndex(moduleId), broken ? 1 : 0), "rcfw_set_tx_broken");
+
+    /// <summary>Breaks module <paramref name="moduleId"/>'s transmit line (<see cref="BreakTransmitLine"/>) at <paramref name="at"/> after construction.</summary>
+    public void ScheduleTransmitBreak(byte moduleId, TimeSpan at) =>
+        Schedule(new ModuleEvent((long)at.TotalMicroseconds, ModuleIndex(moduleId), 0, BreaksLine: true));
 
     /// <summary>
     /// Writes <paramref name="data"/> into module <paramref name="moduleId"/>'s control table at
@@ -323,7 +326,10 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 
             while (_resets.Count > 0 && _resets[0].AtUs <= _nowUs)
             {
-                FirmwareHost.Check(FirmwareHost.Reset(_bus, _resets[0].Module, _resets[0].Cause), "rcfw_reset");
+                var e = _resets[0];
+                FirmwareHost.Check(
+                    e.BreaksLine ? FirmwareHost.SetTransmitBroken(_bus, e.Module, 1) : FirmwareHost.Reset(_bus, e.Module, e.Cause),
+                    e.BreaksLine ? "rcfw_set_tx_broken" : "rcfw_reset");
                 _resets.RemoveAt(0);
             }
         }
@@ -442,4 +448,13 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 
     // A link's inertia at the axis output, kg m^2: a few grams at a few centimetres (no mass data in the design).
     private static double LinkInertia(ActuatorDefinition actuator) => actuator.IsKinematic ? 2e-5 : 1e-7;
+
+    private void Schedule(ModuleEvent e)
+    {
+        _resets.Add(e);
+        _resets.Sort((a, b) => a.AtUs.CompareTo(b.AtUs));
+    }
+
+    /// <summary>A module event at a simulated time: a reset with its cause, or its transmit line breaking.</summary>
+    private readonly record struct ModuleEvent(long AtUs, int Module, byte Cause, bool BreaksLine = false);
 }

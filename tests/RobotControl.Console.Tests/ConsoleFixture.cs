@@ -16,6 +16,14 @@ public sealed class ConsoleFixture : IAsyncLifetime
 {
     public const string ChromiumPath = "/usr/bin/chromium";
 
+    /// <summary>Chromium's switches: WebGL through SwiftShader, and Chromium's fake capture device, granted without asking (the surgeon's video panel).</summary>
+    public static readonly string[] ChromiumArgs =
+    [
+        "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+        "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
+        "--use-fake-device-for-media-stream", "--use-fake-ui-for-media-stream",
+    ];
+
     private HeadlessChromium? _chromium;
 
     public HeadlessSession Session { get; private set; } = null!;
@@ -47,17 +55,13 @@ public sealed class ConsoleFixture : IAsyncLifetime
         _chromium = await HeadlessChromium.LaunchAsync();
     }
 
-    /// <summary>Debian's headless Chromium with WebGL through SwiftShader.</summary>
+    /// <summary>Debian's headless Chromium with <see cref="ChromiumArgs"/>.</summary>
     public static Task<IBrowser> LaunchChromiumAsync(IPlaywright playwright) =>
         playwright.Chromium.LaunchAsync(new BrowserTypeLaunchOptions
         {
             ExecutablePath = ChromiumPath,
             Headless = true,
-            Args =
-            [
-                "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
-            ],
+            Args = ChromiumArgs,
         });
 
     public async Task DisposeAsync()

@@ -58,10 +58,12 @@ public sealed partial class HeadlessSession : IConsoleSession
     /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
     /// <exception cref="InvalidOperationException">The graph names no robot, or the transport does not fit.</exception>
     /// <exception cref="IOException">The transport cannot be opened.</exception>
+    /// <exception cref="FormatException">An injected fault is not one the console takes, or names no module.</exception>
     public HeadlessSession(HeadlessSessionOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
         var slot = new ObserverSlot();
+        var faults = new ConsoleFaults(options.Inject, options.Virtual);
         _session = RobotSession.Open(
             new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot },
             options.Catalog);
@@ -70,6 +72,15 @@ public sealed partial class HeadlessSession : IConsoleSession
         _supervisor = _session.Supervisor;
         _clock = _session.Clock;
         _begin = _clock.GetTimestamp();
+        try
+        {
+            faults.Schedule(_session.Simulation, _robot);
+        }
+        catch (FormatException)
+        {
+            _session.Dispose();
+            throw;
+        }
         _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
         slot.Target = _recorder;
         Transport = options.Virtual ? $"virtual:{Path.GetFileName(_robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;

@@ -1,3 +1,4 @@
+using RobotControl.Host.Harness;
 using RobotControl.Runtime.Discovery;
 
 namespace RobotControl.WebConsole.Adapter;
@@ -22,4 +23,7 @@ public sealed record HeadlessSessionOptions
 
     /// <summary>Rows of signal history kept for streaming.</summary>
     public int RingCapacity { get; init; } = 16384;
+
+    /// <summary>Faults injected into the virtual robot (<c>silent=</c> only: see <see cref="ConsoleFaults"/>).</summary>
+    public FaultInjection Inject { get; init; } = FaultInjection.None;
 }

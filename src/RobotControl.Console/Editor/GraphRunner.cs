@@ -105,7 +105,7 @@ public sealed class GraphRunner : IDisposable
         // Motors off through the supervisor first (refused only while homing runs or at E_STOP, where they are off or
         // about to be); closing the session then switches off whatever is still on.
         await current.TorqueAsync(false).ConfigureAwait(false);
-        var stopped = new StoppedSession(current.Status, current.Model, current.EventsAfter(0));
+        var stopped = new StoppedSession(current);
         _session.Replace(stopped);
         await Task.Run(current.Dispose).ConfigureAwait(false);
     }

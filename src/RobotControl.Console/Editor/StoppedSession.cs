@@ -11,11 +11,15 @@ internal sealed class StoppedSession : IConsoleSession
     private const string Refusal = "no graph runs: start one from the graph editor";
     private readonly IReadOnlyList<EventEntry> _events;
 
-    public StoppedSession(SessionStatus last, RobotModelView model, IReadOnlyList<EventEntry> events)
+    /// <summary>What is left of <paramref name="last"/>: its status (stopped), robot model, workspace, events and faults.</summary>
+    public StoppedSession(IConsoleSession last)
     {
-        Status = last with { Session = "stopped", TorqueOn = false, RobotState = "INIT", RobotLayer = "Disabled", ModulesFound = 0 };
-        Model = model;
-        _events = events;
+        ArgumentNullException.ThrowIfNull(last);
+        Status = last.Status with { Session = "stopped", TorqueOn = false, RobotState = "INIT", RobotLayer = "Disabled", ModulesFound = 0 };
+        Model = last.Model;
+        Workspace = last.Workspace;
+        Surgeon = new SurgeonView([], [], last.Surgeon.Faults); // no hands or pedals run; the faults stay readable
+        _events = last.EventsAfter(0);
     }
 
     public SessionStatus Status { get; }
@@ -27,6 +31,12 @@ internal sealed class StoppedSession : IConsoleSession
     public IReadOnlyList<ComponentTiming> Timings => [];
 
     public RobotModelView Model { get; }
+
+    public SurgeonView Surgeon { get; }
+
+    public WorkspaceView Workspace { get; }
+
+    public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
 
     public IReadOnlyList<EventEntry> EventsAfter(long after) => [.. _events.Where(e => e.Sequence > after)];
 

@@ -35,6 +35,15 @@ public sealed class SwitchableSession : IConsoleSession
     /// <inheritdoc />
     public RobotModelView Model => _current.Model;
 
+    /// <inheritdoc />
+    public SurgeonView Surgeon => _current.Surgeon;
+
+    /// <inheritdoc />
+    public WorkspaceView Workspace => _current.Workspace;
+
+    /// <inheritdoc />
+    public Task<CommandResult> SetScaleAsync(string arm, double ratio) => _current.SetScaleAsync(arm, ratio);
+
     /// <summary>Makes <paramref name="next"/> current and returns the one it replaces (the caller disposes it).</summary>
     public IConsoleSession Replace(IConsoleSession next)
     {

@@ -81,6 +81,7 @@ internal static class ApiEndpoints
         });
         actions.MapPost("/motors/{motor}/release", async (string motor) => Result(await session.ReleaseAsync(motor).ConfigureAwait(false)));
         actions.MapPost("/motors/{motor}/home", async (string motor) => Result(await session.HomeAsync(motor).ConfigureAwait(false)));
+        SurgeonEndpoints.Map(api, actions, session);
     }
 
     /// <summary>The console named by the request's <see cref="OperatorRole.ClientHeader"/> header, or null.</summary>
@@ -114,7 +115,7 @@ internal static class ApiEndpoints
     internal static IResult Error(int status, string message, IReadOnlyList<string>? details = null) =>
         Results.Json(new ApiError(message, details), ConsoleJson.Options, statusCode: status);
 
-    private static IResult Result(CommandResult result) => result.Outcome switch
+    internal static IResult Result(CommandResult result) => result.Outcome switch
     {
         CommandOutcome.Ok => Json(result),
         CommandOutcome.BadInput => Error(StatusCodes.Status400BadRequest, result.Message, result.Details),

@@ -69,4 +69,13 @@ public interface IConsoleSession : IDisposable
 
     /// <summary>Clears latched faults in the robot and its modules; at an emergency stop, resets it (motors off, homing needed).</summary>
     Task<CommandResult> ClearFaultsAsync();
+
+    /// <summary>The surgeon's view: hands (clutch, lock, scale, walls) and pedals found in the graph, faults in plain words.</summary>
+    SurgeonView Surgeon { get; }
+
+    /// <summary>The reachable workspace of each arm (sampled once from the robot file's kinematics).</summary>
+    WorkspaceView Workspace { get; }
+
+    /// <summary>Sets the scale factor (motion ratio) of an arm's hand; refused unless that hand's clutch is held.</summary>
+    Task<CommandResult> SetScaleAsync(string arm, double ratio);
 }

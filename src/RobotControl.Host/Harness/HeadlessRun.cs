@@ -242,8 +242,12 @@ public static class HeadlessRun
         }
     }
 
-    internal static byte ResolveModule(RobotDefinition robot, string module)
+    /// <summary>The bus ID of the module an <c>--inject</c> fault names (<c>arm.location</c>, its name or its ID).</summary>
+    /// <exception cref="FormatException">No such module (the message lists them).</exception>
+    public static byte ResolveModule(RobotDefinition robot, string module)
     {
+        ArgumentNullException.ThrowIfNull(robot);
+        ArgumentNullException.ThrowIfNull(module);
         if (byte.TryParse(module, NumberStyles.None, CultureInfo.InvariantCulture, out var id) && robot.Modules.ById(id) is not null)
         {
             return id;

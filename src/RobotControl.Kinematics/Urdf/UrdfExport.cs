@@ -19,6 +19,9 @@ public static class UrdfExport
     /// <summary>The URDF joint name of joint <paramref name="jointName"/> of arm <paramref name="armName"/>.</summary>
     public static string JointName(string armName, string jointName) => $"{armName}_{jointName}";
 
+    /// <summary>The URDF link at the tool tip of arm <paramref name="armName"/>.</summary>
+    public static string ToolLinkName(string armName) => $"{armName}_tool";
+
     /// <summary>The URDF document of <paramref name="robot"/>.</summary>
     public static XDocument ToDocument(RobotDefinition robot)
     {

@@ -66,7 +66,7 @@ internal static class UrdfRobotBuilder
             entry = fixedPart;
         }
 
-        var tool = $"{arm.Name}_tool";
+        var tool = UrdfExport.ToolLinkName(arm.Name);
         links.Add(new UrdfLink(tool, null, 0, 0));
         joints.Add(new UrdfJoint($"{arm.Name}_tool_mount", parent, tool, entry, Vector3d.UnitZ, null));
     }

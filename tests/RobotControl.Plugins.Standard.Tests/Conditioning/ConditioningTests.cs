@@ -21,6 +21,24 @@ public sealed class ConditioningTests
     }
 
     [Fact]
+    public void The_ratio_input_changes_the_scale_at_the_next_tick_and_out_of_range_values_are_ignored()
+    {
+        var scaling = new PluginDriver(new ScalingPlugin(new ScalingSettings { Ratio = 0.5, ReferenceXMm = 100 }, Context("s")));
+        scaling.Set(("x", 140), ("y", 0), ("z", 0)).Tick();
+        Assert.Equal(120.0, scaling.Xyz().Item1);
+
+        scaling.Set(("ratio", 0.25)).Tick();
+        Assert.Equal(110.0, scaling.Xyz().Item1);
+
+        // Outside the ratio setting's range (0.01..10) or not a number: the last good ratio stays.
+        foreach (var bad in new[] { 0.0, -1, 11, double.NaN })
+        {
+            scaling.Set(("ratio", bad)).Tick();
+            Assert.Equal(110.0, scaling.Xyz().Item1);
+        }
+    }
+
+    [Fact]
     public void Homing_maps_the_device_home_to_the_origin_through_the_rotation()
     {
         // roll 90 deg: device y (up) becomes robot z (up), device z (toward the user) becomes robot -y.

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Diagnostics;
 using RobotControl.Cli.Commands.Run;
 using RobotControl.Cli.Options;
+using RobotControl.Host.Harness;
 using RobotControl.Host.Session;
 using RobotControl.Runtime.Graph;
 using RobotControl.WebConsole.Adapter;
@@ -11,7 +12,7 @@ using RobotControl.WebConsole.Server;
 namespace RobotControl.Cli.Commands.WebConsole;
 
 /// <summary>
-/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open]</c>:
+/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open [--page surgeon] [--kiosk]] [--inject silent=...]</c>:
 /// starts the session and serves the web console (pages and JSON/WebSocket API) from this process until Ctrl+C.
 /// </summary>
 internal sealed class ConsoleCommand : ICliCommand
@@ -27,9 +28,12 @@ internal sealed class ConsoleCommand : ICliCommand
         var open = new Option<bool>("--open") { Description = "Open the console in a browser window (Chromium's --app mode) when one is installed" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder" };
         var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
-        var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status and graph editor of a running session.");
+        var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: silent=<module>@<time>, e.g. silent=left.forearm@30s (see docs/safety.md)" };
+        var page = new Option<string?>("--page") { Description = "The page --open shows: bus, plots, view3d, status, editor or surgeon" };
+        var kiosk = new Option<bool>("--kiosk") { Description = "With --open: full screen, no browser controls (Chromium's --kiosk)" };
+        var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status, graph editor and the surgeon's view of a running session.");
         command.Arguments.Add(graph);
-        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed })
+        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed, inject, page, kiosk })
         {
             command.Options.Add(o);
         }
@@ -43,12 +47,13 @@ internal sealed class ConsoleCommand : ICliCommand
             parse.GetValue(open),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
+            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk)),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
     }
 
-    private static int Run(string graphPath, bool isVirtual, string? transport, string bindText, string? token, bool open, string? pluginsFolder, int seed, TextWriter output, TextWriter error)
+    private static int Run(string graphPath, bool isVirtual, string? transport, string bindText, string? token, bool open, string? pluginsFolder, int seed, ConsoleExtras extras, TextWriter output, TextWriter error)
     {
         if (isVirtual && transport is not null)
         {
@@ -76,8 +81,9 @@ internal sealed class ConsoleCommand : ICliCommand
                 TransportOverride.Check(transport);
             }
 
+            extras.CheckPage();
             options = new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed };
-            session = new HeadlessSession(options);
+            session = new HeadlessSession(options with { Inject = FaultInjection.Parse(extras.Inject) }); // faults for the first session only, not for graphs started from the editor
         }
         catch (GraphException ex)
         {
@@ -117,7 +123,7 @@ internal sealed class ConsoleCommand : ICliCommand
 
             if (open)
             {
-                output.WriteLine(OpenBrowser(server.OpenUrl));
+                output.WriteLine(OpenBrowser(extras.Url(server.OpenUrl), extras.Kiosk));
             }
 
             output.WriteLine("console: Ctrl+C stops");
@@ -143,7 +149,7 @@ internal sealed class ConsoleCommand : ICliCommand
     }
 
     /// <summary>Starts a Chromium-family browser in app mode on <paramref name="url"/>; says what happened.</summary>
-    private static string OpenBrowser(Uri url)
+    private static string OpenBrowser(Uri url, bool kiosk)
     {
         foreach (var name in new[] { "chromium", "chromium-browser", "google-chrome", "microsoft-edge" })
         {
@@ -153,8 +159,8 @@ internal sealed class ConsoleCommand : ICliCommand
                 continue;
             }
 
-            using var process = Process.Start(new ProcessStartInfo(path) { ArgumentList = { $"--app={url}", "--no-first-run" }, UseShellExecute = false });
-            return $"console: opened {name} in app mode";
+            using var process = Process.Start(new ProcessStartInfo(path) { ArgumentList = { $"--app={url}", "--no-first-run", kiosk ? "--kiosk" : "--start-maximized" }, UseShellExecute = false });
+            return $"console: opened {name} in {(kiosk ? "kiosk" : "app")} mode";
         }
 
         return "console: --open: no Chromium-family browser found (chromium, chromium-browser, google-chrome); open the URL above";

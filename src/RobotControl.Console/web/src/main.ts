@@ -12,6 +12,7 @@ const pages: Record<string, () => Promise<Page>> = {
   view3d: async () => (await import('./pages/view3d')).view3dPage,
   status: async () => (await import('./pages/status')).statusPage,
   editor: async () => (await import('./pages/editor/page')).editorPage,
+  surgeon: async () => (await import('./pages/surgeon')).surgeonPage,
 };
 let leave: (() => void) | null = null;
 let visit = 0;
