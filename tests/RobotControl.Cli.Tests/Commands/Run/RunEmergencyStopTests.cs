@@ -16,10 +16,10 @@ public sealed class RunEmergencyStopTests
     public void Typing_estop_during_a_run_trips_the_supervisor_and_the_arms_hold_for_the_rest_of_the_run()
     {
         var report = Path.Combine(Directory.CreateTempSubdirectory("rcestop").FullName, "report.json");
-        using (var run = new RunProcess("run", RunProcess.Graph, "--virtual", "--duration", "60s", "--report", report))
+        using (var run = new RunProcess(typing: true, "run", RunProcess.Graph, "--virtual", "--duration", "60s", "--report", report))
         {
             run.WaitFor("t=", Patience);
-            Assert.Contains("E-STOP: press e", run.Output, StringComparison.Ordinal);
+            Assert.Contains("E-STOP: type e and Enter", run.Output, StringComparison.Ordinal);
             run.Type("nothing"); // other lines are ignored
             run.Type("estop");
             Assert.Equal(1, run.WaitForExit(Patience)); // a trip: exit 1

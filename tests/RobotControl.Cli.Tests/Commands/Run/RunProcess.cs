@@ -13,8 +13,14 @@ internal sealed class RunProcess : IDisposable
     private readonly StringBuilder _output = new();
 
     public RunProcess(params string[] args)
+        : this(false, args)
     {
-        var start = new ProcessStartInfo("dotnet") { RedirectStandardInput = true, RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+    }
+
+    /// <summary>Starts <c>robotctl</c> with <paramref name="args"/>; with <paramref name="typing"/>, its standard input is a pipe for <see cref="Type"/>.</summary>
+    public RunProcess(bool typing, params string[] args)
+    {
+        var start = new ProcessStartInfo("dotnet") { RedirectStandardInput = typing, RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
         start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "robotctl.dll"));
         foreach (var a in args)
         {
