@@ -145,6 +145,30 @@ public sealed class CrbPositionIkTests
     public void Refuses_a_chain_that_is_not_a_CRB_arm()
     {
         Assert.Throws<ArgumentException>(() => new CrbPositionIk(TestRobots.Lb));
+        Assert.Throws<ArgumentNullException>(() => new CrbPositionIk(null!));
+    }
+
+    // One change at a time to the CRB-1.0's DH table (rows counted from 1): the closed form must refuse each, naming the row.
+    [Theory]
+    [InlineData(0, "alpha_deg", 10.0, "DH row 1 must be")]
+    [InlineData(0, "a_mm", 1.0, "DH row 1 must be")]
+    [InlineData(0, "d_mm", 1.0, "DH row 1 must be")]
+    [InlineData(1, "alpha_deg", -90.0, "DH row 2 must be")]
+    [InlineData(1, "theta_offset_deg", 5.0, "DH row 2 must be")]
+    [InlineData(1, "a_mm", 3.0, "DH row 2 must be")]
+    [InlineData(2, "alpha_deg", 90.0, "DH row 3 must be")]
+    [InlineData(2, "d_mm", 2.0, "DH row 3 must be")]
+    [InlineData(2, "a_mm", 0.0, "DH row 3 must have a = L1 > 0")]
+    [InlineData(3, "theta_offset_deg", 0.0, "DH row 4 must be")]
+    [InlineData(3, "d_mm", 1.0, "DH row 4 must be")]
+    [InlineData(4, "a_mm", 1.0, "DH row 5 must be the tool roll")]
+    [InlineData(4, "d_mm", 0.0, "DH row 5 must be the tool roll")]
+    public void Refuses_each_departure_from_the_CRB_structure_naming_the_row(int row, string field, double value, string message)
+    {
+        var json = JsonNode.Parse(File.ReadAllText(TestRobots.PathOf("crb-1.0.json")))!;
+        json["dh"]![row]![field] = value;
+        var changed = RobotLoader.LoadFromText(json.ToJsonString(), TestRobots.PathOf("crb-changed.json"));
+        Assert.Contains(message, Assert.Throws<ArgumentException>(() => new CrbPositionIk(changed)).Message, StringComparison.Ordinal);
     }
 
     [Fact]
