@@ -4,8 +4,11 @@ using System.Runtime.InteropServices;
 namespace RobotControl.Host.Realtime;
 
 /// <summary>
-/// How the real-time threads (bus, control loop) are scheduled: SCHED_FIFO at <see cref="Priority"/> for the loop
-/// thread and one below for the bus thread (0: the normal scheduler), pinned to <see cref="Cpu"/> (null: any CPU).
+/// How the real-time threads (bus, control loop) are scheduled: SCHED_FIFO at <see cref="Priority"/> for both (0: the
+/// normal scheduler), pinned to <see cref="Cpu"/> (null: any CPU). One priority for both: the threads share values
+/// through spinning seqlocks, and a reader that spins at a higher priority than a writer it preempted on the same CPU
+/// keeps it from finishing (measured: 27 % deadline misses with the bus thread one priority below the loop, 0.63 % at
+/// one priority, docs/perf/realtime.md); at one priority the spinner's yield lets the writer run.
 /// .NET threads do not inherit the creating thread's policy (a new managed thread starts under SCHED_OTHER, measured by
 /// <c>RealtimeThreadsTests</c>), so each thread applies its scheduling to itself first thing (<see cref="Start"/>
 /// hands each one its prologue). Where the process may not have real-time priority (no CAP_SYS_NICE, RLIMIT_RTPRIO 0)
@@ -49,10 +52,7 @@ public sealed class RealtimeThreads
 
     /// <summary>
     /// Starts the bus thread and the control loop's thread, each given the prologue it must run first on its own
-    /// thread: the loop at <see cref="Priority"/>, the bus thread one SCHED_FIFO priority below (when both want the same
-    /// CPU the loop's tick, a few tens of microseconds, preempts bus work, which waits on the wire most of the time;
-    /// at one priority a FIFO thread runs until it blocks, and the loop would wait for the bus thread's next read).
-    /// Returns once both prologues have run.
+    /// thread (both at <see cref="Priority"/>, on <see cref="Cpu"/>). Returns once both prologues have run.
     /// </summary>
     /// <exception cref="TimeoutException">A thread did not run its prologue within 5 s.</exception>
     public void Start(Action<Action> startBus, Action<Action> startLoop)
@@ -71,7 +71,7 @@ public sealed class RealtimeThreads
         using var applied = new CountdownEvent(2);
         startBus(() =>
         {
-            bus = ApplyToCurrentThread(Priority > 1 ? Priority - 1 : Priority);
+            bus = ApplyToCurrentThread(Priority);
             applied.Signal();
         });
         startLoop(() =>

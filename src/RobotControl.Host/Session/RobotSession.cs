@@ -189,7 +189,7 @@ public sealed class RobotSession : IDisposable
         _ = StopCheck.TorqueOffAndVerify(Robot); // the stop's path too: compiled now, it cannot stall a stop past the watchdog
         Supervisor.Home("session"); // INIT -> HOMING -> PEDAL_UP: motors on, watchdogs armed
         _running = true;
-        (threads ?? RealtimeThreads.Default).Start(Robot.Start, Loop.Start); // each thread schedules itself: the bus one priority below the loop
+        (threads ?? RealtimeThreads.Default).Start(Robot.Start, Loop.Start); // each thread schedules itself (.NET threads do not inherit it)
     }
 
     /// <summary>
