@@ -99,8 +99,8 @@ public sealed partial class BusRobot
         }
 
         // Torque first, then the watchdog: a stall between the two writes must not trip a watchdog that refuses the torque.
-        var t = _client.Write(c.Id, _torqueAddress, torque);
-        var w = _client.Write(c.Id, _watchdogAddress, watchdog);
+        var t = WriteArming(c.Id, _torqueAddress, torque);
+        var w = WriteArming(c.Id, _watchdogAddress, watchdog);
         c.BusWatchdogMs = -1; // known again when the next status poll reads it back
         if (!w.Succeeded || !t.Succeeded)
         {
@@ -108,6 +108,24 @@ public sealed partial class BusRobot
             var known = _client.Read(c.Id, _statusAddress, status).Succeeded;
             throw new IOException(TorqueRefusal.Describe(c.Id, c.Name, on, t, w, known ? ((HardwareErrors)status[0], status[1]) : null));
         }
+    }
+
+    /// <summary>
+    /// A write of the arming sequence, asked again while the module gives no answer at all (each attempt is itself a
+    /// transaction with its retries): switching the motors on or off is set-up, not the cycle, and one stalled reply
+    /// must not leave a robot half-armed (a pty simulator in another process missed whole transactions at start-up
+    /// under load). A refusal (an answer with an error) is final.
+    /// </summary>
+    private Reply WriteArming(byte id, ushort address, ReadOnlySpan<byte> data)
+    {
+        const int Attempts = 4;
+        var reply = _client.Write(id, address, data);
+        for (var attempt = 1; attempt < Attempts && reply.Outcome == ReplyOutcome.Timeout; attempt++)
+        {
+            reply = _client.Write(id, address, data); // torque and watchdog writes are idempotent
+        }
+
+        return reply;
     }
 
     private void ClearInModules()
