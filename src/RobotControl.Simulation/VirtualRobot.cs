@@ -30,7 +30,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     private readonly NoiseSource _wireNoise;
     private readonly long _physicsStepUs;
     private double _byteUs;
-    private readonly List<ModuleEvent> _resets = []; // module resets and broken transmit lines, by time
+    private readonly List<ModuleEvent> _moduleEvents = []; // module resets and broken transmit lines, by time
     private readonly byte[] _scratch = new byte[4096];
     private const long MaxRealTimeLagUs = 20_000;
     private readonly VirtualRobotOptions _options;
@@ -203,14 +203,11 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     }
 
     /// <summary>
-    /// Breaks (or mends) module <paramref name="moduleId"/>'s transmit line: from now on its replies never reach the
-    /// bus (the host hears nothing from it, and the modules after it in a chained FAST/SYNC/BULK READ wait for it in
-    /// vain), while it still hears and obeys the host. The fault of <c>--inject silent=</c>.
+    /// Breaks module <paramref name="moduleId"/>'s transmit line at <paramref name="at"/> after construction: from then
+    /// on its replies never reach the bus (the host hears nothing from it, and the modules after it in a chained
+    /// FAST/SYNC/BULK READ wait for it in vain), while it still hears and obeys the host. The fault of
+    /// <c>--inject silent=</c>.
     /// </summary>
-    public void BreakTransmitLine(byte moduleId, bool broken = true) =>
-        FirmwareHost.Check(FirmwareHost.SetTransmitBroken(_bus, ModuleIndex(moduleId), broken ? 1 : 0), "rcfw_set_tx_broken");
-
-    /// <summary>Breaks module <paramref name="moduleId"/>'s transmit line (<see cref="BreakTransmitLine"/>) at <paramref name="at"/> after construction.</summary>
     public void ScheduleTransmitBreak(byte moduleId, TimeSpan at) =>
         Schedule(new ModuleEvent((long)at.TotalMicroseconds, ModuleIndex(moduleId), 0, BreaksLine: true));
 
@@ -307,9 +304,9 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         while (_nowUs < targetUs)
         {
             var next = Math.Min(targetUs, _physicsUs + _physicsStepUs);
-            if (_resets.Count > 0 && _resets[0].AtUs < next)
+            if (_moduleEvents.Count > 0 && _moduleEvents[0].AtUs < next)
             {
-                next = Math.Max(_nowUs, _resets[0].AtUs);
+                next = Math.Max(_nowUs, _moduleEvents[0].AtUs);
             }
 
             if (next > _nowUs)
@@ -324,13 +321,13 @@ public sealed unsafe partial class VirtualRobot : IDisposable
                 _physicsUs = _nowUs;
             }
 
-            while (_resets.Count > 0 && _resets[0].AtUs <= _nowUs)
+            while (_moduleEvents.Count > 0 && _moduleEvents[0].AtUs <= _nowUs)
             {
-                var e = _resets[0];
+                var e = _moduleEvents[0];
                 FirmwareHost.Check(
                     e.BreaksLine ? FirmwareHost.SetTransmitBroken(_bus, e.Module, 1) : FirmwareHost.Reset(_bus, e.Module, e.Cause),
                     e.BreaksLine ? "rcfw_set_tx_broken" : "rcfw_reset");
-                _resets.RemoveAt(0);
+                _moduleEvents.RemoveAt(0);
             }
         }
 
@@ -451,8 +448,8 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 
     private void Schedule(ModuleEvent e)
     {
-        _resets.Add(e);
-        _resets.Sort((a, b) => a.AtUs.CompareTo(b.AtUs));
+        _moduleEvents.Add(e);
+        _moduleEvents.Sort((a, b) => a.AtUs.CompareTo(b.AtUs));
     }
 
     /// <summary>A module event at a simulated time: a reset with its cause, or its transmit line breaking.</summary>

@@ -58,6 +58,11 @@ public static class HeadlessRun
             sim.ScheduleReset(ResolveModule(session.Graph.Robot!, reset.Module), sim.Elapsed + reset.At);
         }
 
+        foreach (var silent in options.Inject.TimedFaults.Where(f => f.Kind == TimedFaultKind.Silent))
+        {
+            sim.ScheduleTransmitBreak(ResolveModule(session.Graph.Robot!, silent.Target), sim.Elapsed + silent.At); // as the console does
+        }
+
         if (options.Inject.BitErrorRate > 0)
         {
             sim.WireFaults = new WireFaults { BitErrorRate = options.Inject.BitErrorRate };

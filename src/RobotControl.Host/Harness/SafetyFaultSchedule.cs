@@ -37,13 +37,13 @@ internal sealed class SafetyFaultSchedule
         _robot = robot;
         _nan = new double[robot.Definition.JointCount];
         Array.Fill(_nan, double.NaN);
-        _pending = [.. faults.Select(f => Resolve(f, sim, graph, begin + (long)(f.At.TotalSeconds * frequency))).OrderBy(p => p.At)];
+        _pending = [.. faults.Where(f => f.Kind != TimedFaultKind.Silent).Select(f => Resolve(f, sim, graph, begin + (long)(f.At.TotalSeconds * frequency))).OrderBy(p => p.At)];
     }
 
     /// <summary>Faults not applied yet.</summary>
     public int Remaining => _pending.Length - _next;
 
-    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (all but NaN).</summary>
+    /// <summary>Applies every fault due by <paramref name="timestamp"/> that acts before the tick (all but NaN; a silent module is scheduled in the virtual robot itself).</summary>
     public void BeforeTick(long timestamp)
     {
         while (_next < _pending.Length && _pending[_next].At <= timestamp && _pending[_next].Fault.Kind != TimedFaultKind.Nan)
@@ -51,9 +51,6 @@ internal sealed class SafetyFaultSchedule
             var p = _pending[_next++];
             switch (p.Fault.Kind)
             {
-                case TimedFaultKind.Silent:
-                    _sim.BreakTransmitLine(p.Module);
-                    break;
                 case TimedFaultKind.Watchdog:
                     _ = _sim.WriteTable(p.Module, WatchdogAddress, [0, 0]); // bus_watchdog 0: off
                     break;
@@ -104,7 +101,6 @@ internal sealed class SafetyFaultSchedule
                 var touch = touches.FirstOrDefault(t => t.Name == f.Target)?.Backend as SimulatedTouchBackend
                     ?? throw new FormatException($"--inject '{f}': no simulated Touch '{f.Target}' in the graph (simulated Touch instances: {string.Join(", ", touches.Where(t => t.Backend is SimulatedTouchBackend).Select(t => t.Name))})");
                 return new Pending(f, at, null, -1, touch);
-            case TimedFaultKind.Silent:
             case TimedFaultKind.Watchdog:
                 return new Pending(f, at, null, -1, Module: HeadlessRun.ResolveModule(graph.Robot!, f.Target));
             case TimedFaultKind.Nan:
