@@ -1,3 +1,5 @@
+using RobotControl.Runtime.Discovery;
+
 namespace RobotControl.WebConsole.Editor;
 
 /// <summary>The plug-in types the editor offers, and the robot's node.</summary>
@@ -5,7 +7,7 @@ namespace RobotControl.WebConsole.Editor;
 /// <param name="Robot">The robot node of a graph on <see cref="RobotFile"/>, or null when it cannot be read.</param>
 /// <param name="RobotFile">The robot file as a graph in the folder names it.</param>
 /// <param name="Problems">Assemblies or types the catalog could not load.</param>
-public sealed record CatalogView(IReadOnlyList<PluginTypeView> Types, NodePortsView? Robot, string? RobotFile, IReadOnlyList<string> Problems);
+public sealed record CatalogView(IReadOnlyList<PluginTypeView> Types, PluginPorts? Robot, string? RobotFile, IReadOnlyList<string> Problems);
 
 /// <summary>One plug-in type.</summary>
 /// <param name="Name">The name graph files use.</param>
@@ -14,31 +16,7 @@ public sealed record CatalogView(IReadOnlyList<PluginTypeView> Types, NodePortsV
 /// <param name="Settings">Its settings schema (empty when it has none).</param>
 /// <param name="Ports">Its inputs and outputs with default settings, or null when those cannot create it.</param>
 /// <param name="PortsProblem">Why there are no ports (e.g. a required setting), else null.</param>
-public sealed record PluginTypeView(string Name, string Description, string Assembly, IReadOnlyList<SettingView> Settings, NodePortsView? Ports, string? PortsProblem);
-
-/// <summary>One setting of a schema.</summary>
-/// <param name="Name">JSON name.</param>
-/// <param name="Kind">number, integer, boolean, text or choice.</param>
-/// <param name="Description">What it does.</param>
-/// <param name="Units">Units (empty when none).</param>
-/// <param name="Minimum">Lowest value (numbers; null when unbounded).</param>
-/// <param name="Maximum">Highest value (numbers; null when unbounded).</param>
-/// <param name="Required">True when a graph must give it.</param>
-/// <param name="Default">The default value (null when none).</param>
-/// <param name="Choices">The names a choice takes.</param>
-/// <param name="IsFilePath">True for a path relative to the graph file.</param>
-public sealed record SettingView(string Name, string Kind, string Description, string Units, double? Minimum, double? Maximum, bool Required, object? Default, IReadOnlyList<string> Choices, bool IsFilePath);
-
-/// <summary>A node's inputs and outputs.</summary>
-/// <param name="Inputs">Inputs in port order.</param>
-/// <param name="Outputs">Outputs in port order.</param>
-public sealed record NodePortsView(IReadOnlyList<PortView> Inputs, IReadOnlyList<PortView> Outputs);
-
-/// <summary>One port.</summary>
-/// <param name="Name">Port name (the signal is <c>instance.port</c>).</param>
-/// <param name="Units">Units (empty when none).</param>
-/// <param name="Description">What it carries.</param>
-public sealed record PortView(string Name, string Units, string Description);
+public sealed record PluginTypeView(string Name, string Description, string Assembly, IReadOnlyList<SettingDescription> Settings, PluginPorts? Ports, string? PortsProblem);
 
 /// <summary>One problem the graph-file loader found, with its JSON path.</summary>
 /// <param name="Path">JSON path, e.g. <c>$.wires[3].to</c>.</param>
@@ -55,4 +33,4 @@ public sealed record RunView(bool Running, string? Graph, string Transport, stri
 /// <summary>What a check of the edited graph found.</summary>
 /// <param name="Problems">The loader's problems (empty: the graph loads and can run).</param>
 /// <param name="Ports">The ports of each instance that could be created with its settings (and of <c>robot</c>).</param>
-public sealed record CheckView(IReadOnlyList<ProblemView> Problems, IReadOnlyDictionary<string, NodePortsView> Ports);
+public sealed record CheckView(IReadOnlyList<ProblemView> Problems, IReadOnlyDictionary<string, PluginPorts> Ports);

@@ -62,11 +62,11 @@ public sealed class GraphEditor
             using var document = JsonDocument.Parse(json, new JsonDocumentOptions { CommentHandling = JsonCommentHandling.Skip });
             var root = document.RootElement;
             var robot = root.ValueKind == JsonValueKind.Object && root.TryGetProperty("robot", out var r) && r.ValueKind == JsonValueKind.String ? TryRobot(r.GetString()!) : null;
-            return new CheckView(problems, root.ValueKind == JsonValueKind.Object ? EditorCatalog.InstancePorts(null, root, _catalog, robot, Folder.Root) : new Dictionary<string, NodePortsView>());
+            return new CheckView(problems, root.ValueKind == JsonValueKind.Object ? EditorCatalog.InstancePorts(null, root, _catalog, robot, Folder.Root) : new Dictionary<string, PluginPorts>());
         }
         catch (JsonException)
         {
-            return new CheckView(problems, new Dictionary<string, NodePortsView>());
+            return new CheckView(problems, new Dictionary<string, PluginPorts>());
         }
     }
 

@@ -78,13 +78,13 @@ public sealed class SdkPackagingTests : IDisposable
         // 5. robotctl plugins lists the new type with its assembly, SDK version, ports and settings.
         var listed = new StringWriter();
         var listError = new StringWriter();
-        Assert.Equal(0, PluginsCommand.Run(plugins, null, json: true, listed, listError));
+        Assert.Equal(0, PluginsCommand.Run(plugins, null, PluginsFormat.Json, listed, listError));
         Assert.Equal(refusal, listError.ToString().TrimEnd());
         using (var listing = JsonDocument.Parse(listed.ToString()))
         {
             var filter = listing.RootElement.GetProperty("plugins").EnumerateArray().Single(p => p.GetProperty("name").GetString() == "mylab_filters_low_pass");
             Assert.Equal(("MyLab.Filters", version), (filter.GetProperty("assembly").GetString(), filter.GetProperty("sdk_version").GetString()));
-            Assert.Equal("mm", filter.GetProperty("inputs")[0].GetProperty("units").GetString());
+            Assert.Equal("mm", filter.GetProperty("ports").GetProperty("inputs")[0].GetProperty("units").GetString());
             var cutoff = filter.GetProperty("settings")[0];
             Assert.Equal(("cutoff_hz", 0.1, 200.0), (cutoff.GetProperty("name").GetString(), cutoff.GetProperty("minimum").GetDouble(), cutoff.GetProperty("maximum").GetDouble()));
             Assert.DoesNotContain(listing.RootElement.GetProperty("plugins").EnumerateArray(), p => p.GetProperty("name").GetString() == "mylab_legacy_low_pass");

@@ -1,11 +1,12 @@
 using System.Globalization;
+using RobotControl.Runtime.Discovery;
 
 namespace RobotControl.Cli.Commands.Plugins;
 
 /// <summary>The human-readable form of <c>robotctl plugins</c>: one block per type, aligned columns per section.</summary>
 internal static class PluginListingText
 {
-    public static void Write(IReadOnlyList<PluginListing> listings, TextWriter output)
+    public static void Write(IReadOnlyList<PluginDescription> listings, TextWriter output)
     {
         output.WriteLine($"{listings.Count} plug-in types (host plug-in SDK {RobotControl.Plugins.Sdk.SdkVersion.Text})");
         foreach (var p in listings)
@@ -13,17 +14,17 @@ internal static class PluginListingText
             output.WriteLine();
             output.WriteLine($"{p.Name}  {p.Description}");
             output.WriteLine($"  assembly  {p.Assembly} {p.AssemblyVersion}, built against SDK {p.SdkVersion}  ({p.Location})");
-            if (p.Inputs is null || p.Outputs is null)
+            if (p.Ports is null)
             {
-                output.WriteLine($"  ports     {p.PortsNote}");
+                output.WriteLine($"  ports     {p.PortsProblem}");
             }
             else
             {
-                Section(output, "inputs", p.Inputs.Select(i => new[] { i.Name, Units(i.Units), i.Description }));
-                Section(output, "outputs", p.Outputs.Select(o => new[] { o.Name, Units(o.Units), o.Description, $"(safe: {o.SafeValue})" }));
+                Section(output, "inputs", p.Ports.Inputs.Select(i => new[] { i.Name, Units(i.Units), i.Description }));
+                Section(output, "outputs", p.Ports.Outputs.Select(o => new[] { o.Name, Units(o.Units), o.Description, $"(safe: {o.SafeValue})" }));
             }
 
-            Section(output, "settings", p.Settings.Select(s => new[] { s.Name, s.Kind, Units(s.Units), Range(s), $"default {s.Default ?? "-"}", s.Description }));
+            Section(output, "settings", p.Settings.Select(s => new[] { s.Name, s.Kind, Units(s.Units), Range(s), $"default {Default(s.Default)}", s.Description }));
         }
     }
 
@@ -46,9 +47,17 @@ internal static class PluginListingText
         }
     }
 
+    private static string Default(object? value) => value switch
+    {
+        null => "-",
+        bool b => b ? "true" : "false",
+        IFormattable f => f.ToString(null, CultureInfo.InvariantCulture),
+        var o => o.ToString() ?? "-",
+    };
+
     private static string Units(string units) => units.Length == 0 ? "" : $"[{units}]";
 
-    private static string Range(SettingListing s)
+    private static string Range(SettingDescription s)
     {
         if (s.Choices.Count > 0)
         {

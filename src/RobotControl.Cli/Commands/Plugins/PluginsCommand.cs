@@ -4,13 +4,14 @@ using RobotControl.Cli.Commands.Run;
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using RobotControl.Plugins.Sdk;
+using RobotControl.Runtime.Discovery;
 
 namespace RobotControl.Cli.Commands.Plugins;
 
 /// <summary>
-/// <c>robotctl plugins [--plugins dir] [--robot file] [--json]</c>: every plug-in type the host finds (its own and a
-/// plug-ins folder's): name, description, inputs and outputs with units, settings with ranges, assembly and the SDK
-/// version it was built against. A table for people, JSON for scripts.
+/// <c>robotctl plugins [--plugins dir] [--robot file] [--json | --markdown]</c>: every plug-in type the host finds (its
+/// own and a plug-ins folder's): name, description, inputs and outputs with units, settings with ranges, assembly and
+/// the SDK version it was built against. A table for people, JSON for scripts, Markdown for the reference in docs/.
 /// </summary>
 internal sealed class PluginsCommand : ICliCommand
 {
@@ -27,22 +28,30 @@ internal sealed class PluginsCommand : ICliCommand
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder (as robotctl run does)" };
         var robot = new Option<FileInfo?>("--robot") { Description = "Robot file to create the plug-ins with, for plug-ins whose ports depend on the robot (e.g. one per joint)" };
         var json = new Option<bool>("--json") { Description = "Write JSON (for scripts) instead of the table" };
+        var markdown = new Option<bool>("--markdown") { Description = "Write the Markdown reference (docs/plugin-reference.md) instead of the table" };
         var command = new Command("plugins", "List the plug-in types found: ports with units, settings with ranges, assembly and SDK version.");
         command.Options.Add(plugins);
         command.Options.Add(robot);
         command.Options.Add(json);
+        command.Options.Add(markdown);
         command.SetAction(parse => Run(
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(robot)?.FullName,
-            parse.GetValue(json),
+            Format(parse.GetValue(json), parse.GetValue(markdown)),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
     }
 
-    /// <summary>Runs the command; returns 0, or 2 when the folder or robot file is unusable.</summary>
-    internal static int Run(string? pluginsFolder, string? robotPath, bool json, TextWriter output, TextWriter error)
+    /// <summary>Runs the command; returns 0, or 2 when the folder or robot file is unusable or both formats are asked.</summary>
+    internal static int Run(string? pluginsFolder, string? robotPath, PluginsFormat format, TextWriter output, TextWriter error)
     {
+        if (format == PluginsFormat.Conflicting)
+        {
+            error.WriteLine("--json and --markdown: give one of them");
+            return 2;
+        }
+
         if (pluginsFolder is not null && !Directory.Exists(pluginsFolder))
         {
             error.WriteLine($"--plugins: folder '{pluginsFolder}' does not exist");
@@ -69,16 +78,31 @@ internal sealed class PluginsCommand : ICliCommand
             error.WriteLine($"plug-ins: {problem}");
         }
 
-        var listings = catalog.Types.OrderBy(t => t.Name, StringComparer.Ordinal).Select(t => PluginListing.Of(t, robot)).ToList();
-        if (json)
+        var listings = catalog.Types
+            .OrderBy(t => t.Name, StringComparer.Ordinal)
+            .Select(t => PluginDescription.Of(t, robot, Directory.GetCurrentDirectory()))
+            .ToList();
+        switch (format)
         {
-            output.WriteLine(JsonSerializer.Serialize(new { host_sdk_version = SdkVersion.Text, plugins = listings, problems = catalog.Problems }, Json));
-        }
-        else
-        {
-            PluginListingText.Write(listings, output);
+            case PluginsFormat.Json:
+                output.WriteLine(JsonSerializer.Serialize(new { host_sdk_version = SdkVersion.Text, plugins = listings, problems = catalog.Problems }, Json));
+                break;
+            case PluginsFormat.Markdown:
+                output.Write(PluginReference.Document(listings, robot?.Name));
+                break;
+            default:
+                PluginListingText.Write(listings, output);
+                break;
         }
 
         return 0;
     }
+
+    private static PluginsFormat Format(bool json, bool markdown) => (json, markdown) switch
+    {
+        (true, true) => PluginsFormat.Conflicting,
+        (true, false) => PluginsFormat.Json,
+        (false, true) => PluginsFormat.Markdown,
+        _ => PluginsFormat.Table,
+    };
 }
