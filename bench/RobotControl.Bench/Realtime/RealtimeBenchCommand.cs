@@ -143,7 +143,8 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                 bytesPerSecond / (periods.Length == 0 ? double.NaN : periods.Length / (periods.Sum() * 1e-6)),
                 GC.CollectionCount(0) - gen0,
                 GC.CollectionCount(2) - gen2,
-                report.Stop?.TorqueOff ?? false);
+                report.Stop?.TorqueOff ?? false,
+                report.Stop is not { } stop ? ["no stop check"] : [.. stop.TorqueOn.Select(m => $"torque on: {m}"), .. stop.Unreachable.Select(m => $"no answer: {m}")]);
         }
     }
 

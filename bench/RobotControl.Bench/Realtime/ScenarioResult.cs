@@ -33,7 +33,8 @@ internal sealed record ScenarioResult(
     double AllocatedBytesPerBusCycle,
     int Gen0Collections,
     int Gen2Collections,
-    bool TorqueOffAtStop)
+    bool TorqueOffAtStop,
+    IReadOnlyList<string> StopProblems)
 {
     /// <summary>One summary line for the console.</summary>
     public string Line() => string.Create(CultureInfo.InvariantCulture,

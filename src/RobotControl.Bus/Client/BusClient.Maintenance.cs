@@ -27,7 +27,7 @@ public sealed partial class BusClient
     /// Registers <paramref name="data"/> at <paramref name="address"/> in module <paramref name="id"/>: checked as a write
     /// and acknowledged now, applied by the next ACTION (a new REG WRITE replaces it).
     /// </summary>
-    public Reply RegWrite(byte id, ushort address, ReadOnlySpan<byte> data) => WriteAt(Instruction.RegWrite, id, address, data);
+    public Reply RegWrite(byte id, ushort address, ReadOnlySpan<byte> data) => WriteAt(Instruction.RegWrite, id, address, data, _options.Retries);
 
     /// <summary>Makes module <paramref name="id"/> apply its registered write; the reply carries the write's status.</summary>
     public Reply Action(byte id) => Transact(id, Instruction.Action, ReadOnlySpan<byte>.Empty, 0);
@@ -48,11 +48,11 @@ public sealed partial class BusClient
     }
 
     /// <summary>WRITE or REG WRITE: the address, then the data; waits for the acknowledgement.</summary>
-    private Reply WriteAt(Instruction instruction, byte id, ushort address, ReadOnlySpan<byte> data)
+    private Reply WriteAt(Instruction instruction, byte id, ushort address, ReadOnlySpan<byte> data, int retries)
     {
         var p = _params.AsSpan(0, 2 + data.Length);
         BinaryPrimitives.WriteUInt16LittleEndian(p, address);
         data.CopyTo(p[2..]);
-        return Transact(id, instruction, p, 0);
+        return Transact(id, instruction, p, 0, retries);
     }
 }

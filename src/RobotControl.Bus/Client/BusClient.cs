@@ -143,19 +143,7 @@ public sealed partial class BusClient : IDisposable
     }
 
     /// <summary>Reads <paramref name="data"/>.Length bytes from <paramref name="address"/> of module <paramref name="id"/>.</summary>
-    public Reply Read(byte id, ushort address, Span<byte> data)
-    {
-        Span<byte> p = stackalloc byte[4];
-        BinaryPrimitives.WriteUInt16LittleEndian(p, address);
-        BinaryPrimitives.WriteUInt16LittleEndian(p[2..], (ushort)data.Length);
-        var reply = Transact(id, Instruction.Read, p, data.Length);
-        if (reply.Outcome == ReplyOutcome.Ok)
-        {
-            _decoder.Parameters.CopyTo(data);
-        }
-
-        return reply;
-    }
+    public Reply Read(byte id, ushort address, Span<byte> data) => Read(id, address, data, _options.Retries);
 
     /// <summary>
     /// Reads the block <paramref name="start"/>..start + <paramref name="block"/>.Length of module <paramref name="id"/>
@@ -180,7 +168,7 @@ public sealed partial class BusClient : IDisposable
     }
 
     /// <summary>Writes <paramref name="data"/> at <paramref name="address"/> of module <paramref name="id"/> and waits for the acknowledgement.</summary>
-    public Reply Write(byte id, ushort address, ReadOnlySpan<byte> data) => WriteAt(Instruction.Write, id, address, data);
+    public Reply Write(byte id, ushort address, ReadOnlySpan<byte> data) => WriteAt(Instruction.Write, id, address, data, _options.Retries);
 
     /// <summary>Restarts a module (it answers before restarting).</summary>
     public Reply Reboot(byte id) => Transact(id, Instruction.Reboot, ReadOnlySpan<byte>.Empty, 0);
@@ -307,7 +295,10 @@ public sealed partial class BusClient : IDisposable
     /// <inheritdoc />
     public void Dispose() => _link.Dispose();
 
-    private Reply Transact(byte id, Instruction instruction, ReadOnlySpan<byte> parameters, int replyParameterCount)
+    private Reply Transact(byte id, Instruction instruction, ReadOnlySpan<byte> parameters, int replyParameterCount) =>
+        Transact(id, instruction, parameters, replyParameterCount, _options.Retries);
+
+    private Reply Transact(byte id, Instruction instruction, ReadOnlySpan<byte> parameters, int replyParameterCount, int retries)
     {
         var stats = _stats[id];
         var requestBytes = FrameConstants.Overhead + parameters.Length;
@@ -344,7 +335,7 @@ public sealed partial class BusClient : IDisposable
                 return new Reply(ReplyOutcome.Ok, _decoder.Error);
             }
 
-            if (wrongLength && attempt >= _options.Retries)
+            if (wrongLength && attempt >= retries)
             {
                 stats.Timeout();
                 return new Reply(ReplyOutcome.BadLength, 0); // the module answered, but never with this request's length
@@ -357,7 +348,7 @@ public sealed partial class BusClient : IDisposable
 
             QuietAfterTimeout();
             stats.Timeout();
-            if (attempt >= _options.Retries)
+            if (attempt >= retries)
             {
                 return Reply.TimedOut;
             }

@@ -7,7 +7,9 @@ namespace RobotControl.Host.Session;
 
 /// <summary>
 /// What the modules said after a session switched their motors off: every configured module is read back (torque of
-/// every channel, latched hardware errors), so that a stop is known to have left the robot safe, not assumed to.
+/// every channel, latched hardware errors), so that a stop is known to have left the robot safe, not assumed to. The
+/// writes and reads of a stop ask again when no answer comes (<see cref="BusRobot.InsistingRetries"/>): a module is
+/// reported unreachable only after that many tries.
 /// </summary>
 /// <param name="Modules">Modules read back.</param>
 /// <param name="TorqueOn">Modules that still report torque on (each as <c>id "name"</c>).</param>
@@ -38,8 +40,8 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
             var zeros = new byte[Span(torque)];
             foreach (var c in robot.Controllers)
             {
-                _ = robot.Client.Write(c.Id, torque.At(0), zeros);
-                _ = robot.Client.Write(c.Id, watchdog.At(0), zeros.AsSpan(0, watchdog.Size));
+                _ = robot.Client.Write(c.Id, torque.At(0), zeros, BusRobot.InsistingRetries);
+                _ = robot.Client.Write(c.Id, watchdog.At(0), zeros.AsSpan(0, watchdog.Size), BusRobot.InsistingRetries);
             }
         }
 
@@ -51,7 +53,8 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
         foreach (var c in robot.Controllers)
         {
             var who = $"{c.Id} \"{c.Name}\"";
-            if (!robot.Client.Read(c.Id, torque.At(0), channels).Succeeded || robot.Client.Read(c.Id, status.At(0), error).Outcome != ReplyOutcome.Ok)
+            if (!robot.Client.Read(c.Id, torque.At(0), channels, BusRobot.InsistingRetries).Succeeded
+                || robot.Client.Read(c.Id, status.At(0), error, BusRobot.InsistingRetries).Outcome != ReplyOutcome.Ok)
             {
                 unreachable.Add(who);
                 continue;
