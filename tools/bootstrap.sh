@@ -22,6 +22,8 @@ command -v check_urdf >/dev/null 2>&1 || need+=(liburdfdom-tools)
 command -v npm >/dev/null 2>&1 || need+=(nodejs npm)
 # `bench realtime`'s busy scenario keeps one core busy with stress-ng (bench/RobotControl.Bench/Realtime).
 command -v stress-ng >/dev/null 2>&1 || need+=(stress-ng)
+# ... and measures the machine's own scheduling latency with cyclictest (rt-tests) before each scenario.
+command -v cyclictest >/dev/null 2>&1 || need+=(rt-tests)
 
 if [ ${#need[@]} -gt 0 ]; then
   echo "bootstrap: installing ${need[*]}"

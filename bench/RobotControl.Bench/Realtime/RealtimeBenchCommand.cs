@@ -11,13 +11,15 @@ namespace RobotControl.Bench.Realtime;
 
 /// <summary>
 /// <c>realtime [--graph graphs/teleop-lb.json] [--robot hardware/robots/lb-1.0.json] [--seconds 600]
-/// [--scenarios idle,idle-sll,busy] [--rt-priority 0] [--sim-rt-priority 0] [--cpu N] [--out file.json]</c>: the shipped teleop graph on the
+/// [--scenarios idle,idle-sll,busy] [--rt-priority 0] [--sim-rt-priority 0] [--cpu N] [--floor-seconds 10] [--out file.json]</c>: the shipped teleop graph on the
 /// wall clock, the 1 kHz loop and the bus on their own threads, the virtual robot (real firmware) in another process
 /// behind a pty (<c>robotctl bus-sim --pty</c>, a fresh one per scenario). Per scenario: deadline misses, tick start
 /// jitter p50/p99/p99.9/max, bus cycle period distribution, late replies, CRC errors, timeouts, retries, safety trips,
 /// tracking RMS/max next to the virtual-clock run of the same graph, and bytes allocated per tick. Scenarios:
 /// <c>idle</c> (default GC latency mode), <c>idle-sll</c> (<see cref="GCLatencyMode.SustainedLowLatency"/>),
-/// <c>busy</c> (SustainedLowLatency, one core kept busy by <c>stress-ng --cpu 1</c>).
+/// <c>busy</c> (SustainedLowLatency, one core kept busy by <c>stress-ng --cpu 1</c>). Before each scenario,
+/// <see cref="PlatformFloor"/> measures what the machine allows any SCHED_FIFO thread (cyclictest), and the hypervisor's
+/// steal is counted over the run.
 /// </summary>
 internal sealed class RealtimeBenchCommand : IBenchCommand
 {
@@ -37,9 +39,11 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         var simPriority = int.Parse(Arg(args, "--sim-rt-priority") ?? "0", CultureInfo.InvariantCulture);
         int? cpu = Arg(args, "--cpu") is { } c ? int.Parse(c, CultureInfo.InvariantCulture) : null;
         var outFile = Arg(args, "--out");
-        if (!double.IsFinite(seconds) || seconds is < 1 or > 86_400 || scenarios.Any(s => s is not ("idle" or "idle-sll" or "busy")))
+        var floorTime = TimeSpan.FromSeconds(double.Parse(Arg(args, "--floor-seconds") ?? "10", CultureInfo.InvariantCulture));
+        if (!double.IsFinite(seconds) || seconds is < 1 or > 86_400 || scenarios.Any(s => s is not ("idle" or "idle-sll" or "busy"))
+            || floorTime < TimeSpan.Zero || floorTime > TimeSpan.FromHours(1))
         {
-            Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy");
+            Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy, --floor-seconds 0..3600");
             return 2;
         }
 
@@ -55,7 +59,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
             Console.WriteLine($"scenario {name}: {seconds} s on the wall clock (load average {LoadAverage()})");
             try
             {
-                var result = RunScenario(name, graph, robot, duration, new RealtimeThreads(priority, cpu), simPriority, reference);
+                var result = RunScenario(name, graph, robot, duration, new RealtimeThreads(priority, cpu), simPriority, floorTime, reference);
                 results.Add(result);
                 Console.WriteLine(result.Line());
             }
@@ -85,7 +89,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         return failures.Count == 0 ? 0 : 1;
     }
 
-    private static ScenarioResult RunScenario(string name, string graph, string robot, TimeSpan duration, RealtimeThreads threads, int simPriority, RunReport reference)
+    private static ScenarioResult RunScenario(string name, string graph, string robot, TimeSpan duration, RealtimeThreads threads, int simPriority, TimeSpan floorTime, RunReport reference)
     {
         var (sim, transport) = ChildProcess.StartBusSim(robot, simPriority);
         using (sim)
@@ -93,6 +97,9 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
             string? loadProblem = null;
             using var load = name == "busy" ? ChildProcess.StartCpuLoad(duration + TimeSpan.FromSeconds(10), out loadProblem) : null;
             var gc = name == "idle" ? GCLatencyMode.Interactive : GCLatencyMode.SustainedLowLatency; // set by the run, restored after it
+            // The machine's own floor, in the same conditions (simulator idle, load running), just before the run.
+            var floor = floorTime > TimeSpan.Zero ? PlatformFloor.Measure(floorTime, threads.Priority) : null;
+            var stealStart = PlatformFloor.StealTicks();
             var loadStart = LoadAverage();
             CycleTimesLink? cycles = null;
             var gen0 = GC.CollectionCount(0);
@@ -112,6 +119,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                         (lagP50, lagP99, lagP999, lagMax) = (s.StartLagPercentile(0.5), s.StartLagPercentile(0.99), s.StartLagPercentile(0.999), s.StartLagMaxUs);
                     },
                 });
+            var stealMs = (PlatformFloor.StealTicks() - stealStart) * 10.0; // USER_HZ 100
             var periods = Periods(cycles!.Starts);
             var allocSeconds = (allocEndAt - allocStartAt) / (double)Stopwatch.Frequency;
             var bytesPerSecond = allocStart > 0 && allocSeconds > 0 ? (allocEnd - allocStart) / allocSeconds : double.NaN;
@@ -135,7 +143,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                 report.Bus.Timeouts,
                 report.Bus.Retries,
                 report.Faults.Count(f => f.Message.Contains("watchdog", StringComparison.OrdinalIgnoreCase)),
-                safety is null ? [] : [.. safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds:F3} s".Replace("  ", " ", StringComparison.Ordinal))],
+                safety is null ? [] : [.. safety.Trips.Select(t => $"{t.Check.Name()} {t.Joint} at {t.TimeSeconds:F3} s: {t.Measured:G4} {t.Unit}".Replace("  ", " ", StringComparison.Ordinal))],
                 report.TrackingRmsMm,
                 report.TrackingMaxMm,
                 reference.TrackingRmsMm == 0 ? double.NaN : report.TrackingRmsMm / reference.TrackingRmsMm,
@@ -144,7 +152,9 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                 GC.CollectionCount(0) - gen0,
                 GC.CollectionCount(2) - gen2,
                 report.Stop?.TorqueOff ?? false,
-                report.Stop is not { } stop ? ["no stop check"] : [.. stop.TorqueOn.Select(m => $"torque on: {m}"), .. stop.Unreachable.Select(m => $"no answer: {m}")]);
+                report.Stop is not { } stop ? ["no stop check"] : [.. stop.TorqueOn.Select(m => $"torque on: {m}"), .. stop.Unreachable.Select(m => $"no answer: {m}")],
+                floor,
+                stealMs);
         }
     }
 
