@@ -119,7 +119,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                         (lagP50, lagP99, lagP999, lagMax) = (s.StartLagPercentile(0.5), s.StartLagPercentile(0.99), s.StartLagPercentile(0.999), s.StartLagMaxUs);
                     },
                 });
-            var stealMs = (PlatformFloor.StealTicks() - stealStart) * 10.0; // USER_HZ 100
+            var stealMs = (PlatformFloor.StealTicks() - stealStart) * CpuTimes.MillisecondsPerTick;
             var periods = Periods(cycles!.Starts);
             var allocSeconds = (allocEndAt - allocStartAt) / (double)Stopwatch.Frequency;
             var bytesPerSecond = allocStart > 0 && allocSeconds > 0 ? (allocEnd - allocStart) / allocSeconds : double.NaN;

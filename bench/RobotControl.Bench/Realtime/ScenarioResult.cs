@@ -1,4 +1,5 @@
 using System.Globalization;
+using RobotControl.Host.Realtime;
 
 namespace RobotControl.Bench.Realtime;
 

@@ -12,16 +12,27 @@ public sealed record DoctorFinding(string Check, string Found, string? Advice);
 
 /// <summary>
 /// Checks what the real-time path depends on, for a transport: the port's latency timer and low-latency flag, its
-/// baud error (FTDI chips: a 3 MHz clock divided in eighths), the real-time priority this process may have, and the
-/// CPU frequency scaling governor; and says what to change.
+/// baud error (FTDI chips: a 3 MHz clock divided in eighths), the real-time priority this process may have, the CPU
+/// frequency scaling governor, the CPU time a hypervisor steals and, when asked, how late this machine wakes a
+/// SCHED_FIFO thread (<see cref="PlatformFloor"/>); and says what to change.
 /// </summary>
 public static class Doctor
 {
     private const double FtdiClockHz = 3_000_000;
 
-    /// <summary>The findings for <paramref name="transport"/> (paths under <paramref name="sysRoot"/>).</summary>
+    /// <summary>Wake-up latency (p99.9) above which the 1 kHz loop cannot keep its ticks: a fifth of its period.</summary>
+    public const double WakeUpP999LimitUs = 200;
+
+    /// <summary>Share of CPU time stolen by a hypervisor above which the machine stalls for milliseconds at a time.</summary>
+    public const double StealLimitPercent = 1;
+
+    /// <summary>
+    /// The findings for <paramref name="transport"/> (paths under <paramref name="sysRoot"/>, CPU times from
+    /// <paramref name="procStat"/>). With <paramref name="latencyProbe"/> &gt; 0, cyclictest runs that long at
+    /// SCHED_FIFO <paramref name="probePriority"/>.
+    /// </summary>
     /// <exception cref="FormatException">The transport is malformed or its device missing.</exception>
-    public static IReadOnlyList<DoctorFinding> Examine(string transport, string sysRoot = "/sys")
+    public static IReadOnlyList<DoctorFinding> Examine(string transport, string sysRoot = "/sys", string procStat = "/proc/stat", TimeSpan latencyProbe = default, int probePriority = 80)
     {
         var uri = Session.TransportOverride.Check(transport);
         var findings = new List<DoctorFinding>();
@@ -37,7 +48,42 @@ public static class Doctor
 
         findings.Add(Priority());
         findings.Add(Governor(sysRoot));
+        findings.Add(Steal(procStat));
+        if (latencyProbe > TimeSpan.Zero)
+        {
+            findings.Add(WakeUp(PlatformFloor.Measure(latencyProbe, probePriority), probePriority));
+        }
+
         return findings;
+    }
+
+    /// <summary>The finding for a measured <paramref name="floor"/> (cyclictest at <paramref name="priority"/>).</summary>
+    public static DoctorFinding WakeUp(PlatformFloor floor, int priority)
+    {
+        ArgumentNullException.ThrowIfNull(floor);
+        if (floor.WakeUpLatencyUs is not { } w)
+        {
+            return new DoctorFinding("wake-up latency", floor.Problem ?? "not measured", floor.Problem?.Contains("not installed", StringComparison.Ordinal) == true ? "apt-get install rt-tests" : null);
+        }
+
+        var found = string.Create(CultureInfo.InvariantCulture, $"a SCHED_FIFO {priority} thread woke p50/p99/p99.9/max {w.P50:F0}/{w.P99:F0}/{w.P999:F0}/{w.Max:F0} us late over {floor.Seconds:F0} s (cyclictest; {floor.StealMs:F0} ms stolen meanwhile)");
+        return w.P999 <= WakeUpP999LimitUs && floor.Overflows == 0
+            ? new DoctorFinding("wake-up latency", found, null)
+            : new DoctorFinding("wake-up latency", found + ": the 1 kHz loop will start ticks that late", "use CPUs of its own: bare metal or pinned, isolated vCPUs (isolcpus=, then --cpu), a PREEMPT_RT kernel, no other load at real-time priority");
+    }
+
+    private static DoctorFinding Steal(string procStat)
+    {
+        if (CpuTimes.Read(procStat) is not { Total: > 0 } times)
+        {
+            return new DoctorFinding("hypervisor steal", $"{procStat}: no CPU times to read", null);
+        }
+
+        var percent = 100.0 * times.Steal / times.Total;
+        var found = string.Create(CultureInfo.InvariantCulture, $"{percent:F1} % of CPU time since boot ({times.Steal * CpuTimes.MillisecondsPerTick / 1000:F0} s)");
+        return percent <= StealLimitPercent
+            ? new DoctorFinding("hypervisor steal", found, null)
+            : new DoctorFinding("hypervisor steal", found + ": the host runs something else on these CPUs, and a loop waits milliseconds for them", "run on dedicated CPUs (bare metal, or a virtual machine with pinned vCPUs); check with robotctl doctor --latency 10s");
     }
 
     /// <summary>The baud rate an FTDI chip makes of <paramref name="baud"/> (3 MHz / divisor in 1/8 steps), and the error in %.</summary>

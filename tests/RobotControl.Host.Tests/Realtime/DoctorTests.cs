@@ -22,6 +22,13 @@ public sealed class DoctorTests : IDisposable
 
     private string Sys => Path.Combine(_root.FullName, "sys");
 
+    private string ProcStat(long steal)
+    {
+        var path = Path.Combine(_root.FullName, $"stat-{steal}");
+        File.WriteAllText(path, $"cpu  8000 0 1000 {1000 - steal} 0 0 0 {steal} 0 0\ncpu0 1 2 3 4 5 6 7 8\n");
+        return path;
+    }
+
     private string Tty => Path.Combine(_root.FullName, "ttyUSB9");
 
     public void Dispose() => _root.Delete(recursive: true);
@@ -58,6 +65,39 @@ public sealed class DoctorTests : IDisposable
         var (a, e) = Doctor.FtdiBaud(baud);
         Assert.Equal(actual, a, 0.1);
         Assert.Equal(errorPercent, e, 0.01);
+    }
+
+    [Fact]
+    public void Steal_above_one_percent_of_cpu_time_gets_advice()
+    {
+        var stolen = Doctor.Examine($"serial:{Tty}", Sys, ProcStat(steal: 500)).Single(f => f.Check == "hypervisor steal");
+        Assert.StartsWith("5.0 % of CPU time since boot (5 s)", stolen.Found, StringComparison.Ordinal);
+        Assert.Contains("dedicated CPUs", stolen.Advice, StringComparison.Ordinal);
+
+        var own = Doctor.Examine($"serial:{Tty}", Sys, ProcStat(steal: 0)).Single(f => f.Check == "hypervisor steal");
+        Assert.Equal("0.0 % of CPU time since boot (0 s)", own.Found);
+        Assert.Null(own.Advice);
+    }
+
+    [Fact]
+    public void Wake_up_latency_over_a_fifth_of_the_period_at_p99_9_or_any_overflow_gets_advice()
+    {
+        static PlatformFloor Floor(double p999, long overflows = 0) => new(null, 10, new LatencyQuantiles(30, 80, p999, 900), overflows, 40);
+
+        Assert.Null(Doctor.WakeUp(Floor(200), 80).Advice);
+        Assert.Equal(
+            "a SCHED_FIFO 80 thread woke p50/p99/p99.9/max 30/80/200/900 us late over 10 s (cyclictest; 40 ms stolen meanwhile)",
+            Doctor.WakeUp(Floor(200), 80).Found);
+        Assert.Contains("isolcpus=", Doctor.WakeUp(Floor(201), 80).Advice, StringComparison.Ordinal);
+        Assert.NotNull(Doctor.WakeUp(Floor(100, overflows: 1), 80).Advice);
+        Assert.Null(Doctor.Examine($"serial:{Tty}", Sys).SingleOrDefault(f => f.Check == "wake-up latency")); // only when asked
+    }
+
+    [Fact]
+    public void A_missing_cyclictest_says_what_to_install()
+    {
+        var missing = Doctor.WakeUp(new PlatformFloor("cyclictest is not installed (apt-get install rt-tests)", 10, null, 0, 0), 80);
+        Assert.Equal("apt-get install rt-tests", missing.Advice);
     }
 
     [Fact]

@@ -1,11 +1,13 @@
 using System.CommandLine;
+using RobotControl.Cli.Options;
 using RobotControl.Host.Realtime;
 
 namespace RobotControl.Cli.Commands.Bus;
 
 /// <summary>
-/// <c>robotctl doctor &lt;transport&gt;</c>: what the real-time path depends on (latency timer, low-latency flag, baud
-/// error, real-time priority, CPU governor) and what to change. Exit 1 when something should change.
+/// <c>robotctl doctor &lt;transport&gt; [--latency 10s]</c>: what the real-time path depends on (latency timer,
+/// low-latency flag, baud error, real-time priority, CPU governor, hypervisor steal and, with <c>--latency</c>, how late
+/// the machine wakes a SCHED_FIFO thread) and what to change. Exit 1 when something should change.
 /// </summary>
 internal sealed class DoctorCommand : ICliCommand
 {
@@ -13,19 +15,21 @@ internal sealed class DoctorCommand : ICliCommand
     public Command Build()
     {
         var transport = new Argument<string>("transport") { Description = "The bus, e.g. serial:/dev/ttyUSB0?baud=1000000 or usb:0403:6014" };
+        var latency = CliOption.Duration("--latency", "Also measure how late this machine wakes a SCHED_FIFO thread, for this long (cyclictest; 0: skip)", TimeSpan.Zero, TimeSpan.FromHours(1), TimeSpan.Zero);
         var command = new Command("doctor", "Check a port and this machine for real-time use, and say what to change.");
         command.Arguments.Add(transport);
-        command.SetAction(parse => Run(parse.GetValue(transport)!, "/sys", parse.InvocationConfiguration.Output, parse.InvocationConfiguration.Error));
+        command.Options.Add(latency);
+        command.SetAction(parse => Run(parse.GetValue(transport)!, "/sys", parse.GetValue(latency), parse.InvocationConfiguration.Output, parse.InvocationConfiguration.Error));
         return command;
     }
 
     /// <summary>Prints the findings; 0: nothing to change, 1: advice given, 2: bad transport.</summary>
-    internal static int Run(string transport, string sysRoot, TextWriter output, TextWriter error)
+    internal static int Run(string transport, string sysRoot, TimeSpan latencyProbe, TextWriter output, TextWriter error)
     {
         IReadOnlyList<DoctorFinding> findings;
         try
         {
-            findings = Doctor.Examine(transport, sysRoot);
+            findings = Doctor.Examine(transport, sysRoot, latencyProbe: latencyProbe);
         }
         catch (Exception ex) when (ex is FormatException or IOException)
         {

@@ -1,20 +1,28 @@
 using System.Diagnostics;
 using System.Globalization;
 
-namespace RobotControl.Bench.Realtime;
+namespace RobotControl.Host.Realtime;
+
+/// <summary>p50 / p99 / p99.9 / max of a latency distribution, microseconds.</summary>
+/// <param name="P50">Median.</param>
+/// <param name="P99">99th percentile.</param>
+/// <param name="P999">99.9th percentile.</param>
+/// <param name="Max">Largest.</param>
+public sealed record LatencyQuantiles(double P50, double P99, double P999, double Max);
 
 /// <summary>
 /// What the machine itself allows: the wake-up latency of a bare SCHED_FIFO thread sleeping 1 ms at a time, measured
-/// by <c>cyclictest</c> (Debian's rt-tests) just before a scenario at the loop's priority, and the CPU time the
-/// hypervisor took from this virtual machine (steal, <c>/proc/stat</c>). No loop on this machine can start its ticks
-/// more punctually than the first; the second shows when the whole machine was not running.
+/// by <c>cyclictest</c> (Debian's rt-tests, run as a separate process) at the loop's priority, and the CPU time the
+/// hypervisor took from this virtual machine meanwhile (steal, <c>/proc/stat</c>). No loop on this machine can start
+/// its ticks more punctually than the first; the second shows when the whole machine was not running. Used by
+/// <c>robotctl doctor --latency</c> and before each <c>bench realtime</c> scenario.
 /// </summary>
 /// <param name="Problem">Why there is no latency measurement (cyclictest missing or failed), else null.</param>
 /// <param name="Seconds">How long cyclictest ran.</param>
 /// <param name="WakeUpLatencyUs">Its wake-up latency quantiles (from its histogram, 1 us buckets).</param>
 /// <param name="Overflows">Wake-ups later than the histogram's range (<see cref="HistogramUs"/>).</param>
 /// <param name="StealMs">CPU time stolen by the hypervisor while cyclictest ran, over all CPUs.</param>
-internal sealed record PlatformFloor(string? Problem, double Seconds, Quantiles? WakeUpLatencyUs, long Overflows, double StealMs)
+public sealed record PlatformFloor(string? Problem, double Seconds, LatencyQuantiles? WakeUpLatencyUs, long Overflows, double StealMs)
 {
     /// <summary>The histogram's range: wake-ups later than this count as overflows.</summary>
     public const int HistogramUs = 100_000;
@@ -49,29 +57,18 @@ internal sealed record PlatformFloor(string? Problem, double Seconds, Quantiles?
             return new PlatformFloor(why, seconds, null, 0, 0);
         }
 
-        var steal = (StealTicks() - stealBefore) * 1000.0 / 100; // USER_HZ is 100 on Linux
+        var steal = (StealTicks() - stealBefore) * CpuTimes.MillisecondsPerTick;
         var (latency, overflows) = Parse(output);
         return latency is null
             ? new PlatformFloor("cyclictest printed no histogram", seconds, null, 0, steal)
             : new PlatformFloor(null, seconds, latency, overflows, steal);
     }
 
-    /// <summary>Steal ticks (USER_HZ) of all CPUs so far, or 0 where <c>/proc/stat</c> has none.</summary>
-    public static long StealTicks()
-    {
-        try
-        {
-            var cpu = File.ReadLines("/proc/stat").First().Split(' ', StringSplitOptions.RemoveEmptyEntries);
-            return cpu.Length > 8 ? long.Parse(cpu[8], CultureInfo.InvariantCulture) : 0;
-        }
-        catch (IOException)
-        {
-            return 0;
-        }
-    }
+    /// <summary>Steal ticks of all CPUs so far (0 where <c>/proc/stat</c> has none).</summary>
+    public static long StealTicks() => CpuTimes.Read()?.Steal ?? 0;
 
     /// <summary>Quantiles and overflows from cyclictest's histogram (<c>-h</c>): lines "latency_us count", "# Histogram Overflows: n".</summary>
-    internal static (Quantiles? Latency, long Overflows) Parse(string output)
+    public static (LatencyQuantiles? Latency, long Overflows) Parse(string output)
     {
         var buckets = new List<(int Us, long Count)>();
         long overflows = 0;
@@ -119,6 +116,6 @@ internal sealed record PlatformFloor(string? Problem, double Seconds, Quantiles?
             return HistogramUs; // in the overflow
         }
 
-        return (new Quantiles(Quantile(0.5), Quantile(0.99), Quantile(0.999), max ?? buckets[^1].Us), overflows);
+        return (new LatencyQuantiles(Quantile(0.5), Quantile(0.99), Quantile(0.999), max ?? buckets[^1].Us), overflows);
     }
 }
