@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes graphs/teleop-lb.json, graphs/teleop-crb.json and graphs/teleop-lb-coppeliasim.json: two simulated Touch devices replay the demonstration
 trajectories through homing (left arm mirrored), scaling, clutch and IK into the robot; the IK's workspace force goes
-back through the haptic walls and damping to the device one tick later. The homing origin is the tool position of
+back through the haptic walls (which take the scaling's ratio in effect) and damping to the device one tick later. The homing origin is the tool position of
 the IK's start pose (forward kinematics below, the same DH convention as the robot files). The CoppeliaSim variant
 also wires the IK's joint outputs into one CoppeliaSim bridge instance, `sim`, which drives the imported model."""
 import json, math, os
@@ -39,7 +39,7 @@ def graph(name, r):
             {"name": f"scaling_{side}", "type": "scaling", "settings": {"ratio": ratio, "reference_x_mm": ox, "reference_y_mm": oy, "reference_z_mm": oz}},
             {"name": f"clutch_{side}", "type": "clutch", "settings": {}},
             {"name": f"ik_{side}", "type": "inverse_kinematics", "settings": {"initial_joints_deg": ",".join(str(v) for v in r["home"])}},
-            {"name": f"walls_{side}", "type": "haptic_walls", "settings": {"roll_deg": roll, "mirror": mirror, "scale_ratio": ratio}},
+            {"name": f"walls_{side}", "type": "haptic_walls", "settings": {"roll_deg": roll, "mirror": mirror}},
             {"name": f"damping_{side}", "type": "viscous_damping", "settings": {}},
         ]
         w = lambda a, b, delayed=False: wires.append({"from": a, "to": b, **({"delayed": True} if delayed else {})})
@@ -60,6 +60,13 @@ def graph(name, r):
             w(f"walls_{side}.f{c}", f"damping_{side}.f{c}_in")
             w(f"touch_{side}.{c}", f"damping_{side}.{c}")
             w(f"damping_{side}.f{c}", f"touch_{side}.force_{c}", True)
+        # The walls undo the ratio in effect (the console changes it while the clutch is held): one source, the scaling.
+        w(f"scaling_{side}.ratio", f"walls_{side}.scale_ratio")
+    # The devices push only while the robot follows them; the robot node times out a device whose samples stop coming.
+    for side in ("right", "left"):
+        w("robot.teleop_enabled", f"touch_{side}.force_enable", True)
+    for side in ("right", "left"):
+        w(f"touch_{side}.sample_age_ms", f"robot.{side}.input_age_ms")
     doc = {"schema": "robotcontrol/graph/1", "robot": r["file"], "transport": "virtual", "loop_rate_hz": 1000,
            "instances": instances, "wires": wires}
     return doc

@@ -20,6 +20,7 @@ public sealed class ScalingPlugin : Plugin<ScalingSettings>
     private readonly InputPort[] _in;
     private readonly OutputPort[] _out;
     private readonly InputPort _ratioIn;
+    private readonly OutputPort _ratioOut;
     private readonly double[] _reference;
     private double _ratio;
 
@@ -33,6 +34,7 @@ public sealed class ScalingPlugin : Plugin<ScalingSettings>
         _in = [.. axes.Select((a, i) => DeclareInput(a, "mm", $"position {a}", _reference[i]))];
         _ratioIn = DeclareInput(RatioInput, "", $"motion ratio ({RatioSetting.Minimum}..{RatioSetting.Maximum}; starts at the ratio setting)", Settings.Ratio);
         _out = [.. axes.Select((a, i) => DeclareOutput(a, SafeValue.HoldLastFinite, "mm", $"scaled position {a}", _reference[i]))];
+        _ratioOut = DeclareOutput(RatioInput, SafeValue.HoldLastFinite, "", "the motion ratio in effect (for the haptic walls, which undo it)", Settings.Ratio);
     }
 
     /// <summary>Smallest ratio the input takes (the setting's range).</summary>
@@ -54,5 +56,7 @@ public sealed class ScalingPlugin : Plugin<ScalingSettings>
         {
             Write(_out[i], _reference[i] + (_ratio * (Read(_in[i]) - _reference[i])));
         }
+
+        Write(_ratioOut, _ratio);
     }
 }

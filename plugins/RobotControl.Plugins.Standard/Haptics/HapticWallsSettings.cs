@@ -37,7 +37,7 @@ public sealed record HapticWallsSettings : PluginSettings
     public bool Mirror { get; init; }
 
     /// <summary>Scaling ratio of the arm (device displacement is robot displacement / ratio).</summary>
-    [Setting("Scaling ratio of this arm (as in its scaling instance): the spring acts on device displacement.", Minimum = 0.01, Maximum = 10)]
+    [Setting("Scaling ratio of this arm until the scale_ratio input says otherwise (graphs wire the scaling's ratio output to it): the spring acts on device displacement.", Minimum = 0.01, Maximum = 10)]
     public double ScaleRatio { get; init; } = 1.0;
 
     /// <summary>Extra gain on the force.</summary>

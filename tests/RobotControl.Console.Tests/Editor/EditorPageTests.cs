@@ -18,7 +18,7 @@ public sealed class EditorPageTests(EditorFixture console)
         ("scaling_right", "scaling", [("ratio", "0.5"), ("reference_x_mm", "108.9725"), ("reference_y_mm", "37.0702"), ("reference_z_mm", "-43.785")]),
         ("clutch_right", "clutch", []),
         ("ik_right", "inverse_kinematics", [("initial_joints_deg", "-30,-30,0,90,0")]),
-        ("walls_right", "haptic_walls", [("roll_deg", "90"), ("mirror", "false"), ("scale_ratio", "0.5")]),
+        ("walls_right", "haptic_walls", [("roll_deg", "90"), ("mirror", "false")]),
         ("damping_right", "viscous_damping", []),
     ];
 

@@ -70,6 +70,8 @@ public sealed class SurgeonApiTests(SurgeonFixture console)
         var accepted = await http.PutAsJsonAsync("api/hands/right/scale", new { value = target });
         Assert.Equal(HttpStatusCode.OK, accepted.StatusCode);
         Assert.Equal(target, await Scale(http), 9);
+        // The haptic walls undo the ratio in effect: the graph wires scaling_right.ratio to walls_right.scale_ratio.
+        await SurgeonFixture.Until(() => console.Latest("scaling_right.ratio") == target, "the ratio in effect reaches the walls");
 
         // After the clutch is released the target (the clutch's output) moves on from where it stopped: no tick-to-tick
         // step near the change of ratio (a change while released would step by the ratio change times the hand's

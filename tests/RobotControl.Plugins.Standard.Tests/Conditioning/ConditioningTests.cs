@@ -24,17 +24,21 @@ public sealed class ConditioningTests
     public void The_ratio_input_changes_the_scale_at_the_next_tick_and_out_of_range_values_are_ignored()
     {
         var scaling = new PluginDriver(new ScalingPlugin(new ScalingSettings { Ratio = 0.5, ReferenceXMm = 100 }, Context("s")));
+        Assert.Equal(0.5, scaling["ratio"]); // the ratio output starts at the setting, before the first tick
         scaling.Set(("x", 140), ("y", 0), ("z", 0)).Tick();
         Assert.Equal(120.0, scaling.Xyz().Item1);
+        Assert.Equal(0.5, scaling["ratio"]);
 
         scaling.Set(("ratio", 0.25)).Tick();
         Assert.Equal(110.0, scaling.Xyz().Item1);
+        Assert.Equal(0.25, scaling["ratio"]); // the ratio in effect, for the haptic walls
 
         // Outside the ratio setting's range (0.01..10) or not a number: the last good ratio stays.
         foreach (var bad in new[] { 0.0, -1, 11, double.NaN })
         {
             scaling.Set(("ratio", bad)).Tick();
             Assert.Equal(110.0, scaling.Xyz().Item1);
+            Assert.Equal(0.25, scaling["ratio"]);
         }
     }
 

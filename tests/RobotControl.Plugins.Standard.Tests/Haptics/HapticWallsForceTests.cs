@@ -29,4 +29,27 @@ public sealed class HapticWallsForceTests
         Assert.Equal(0.16, walls["fy"], 12);
         Assert.Equal(0.4, walls["fz"], 12);
     }
+
+    [Fact]
+    public void The_scale_ratio_input_sets_the_ratio_from_the_next_tick_and_out_of_range_values_are_ignored()
+    {
+        // Starts at the setting (0.25: factor 8 with gain 2); the scaling's ratio output changes it to 0.5 (factor 4).
+        var walls = new PluginDriver(new HapticWallsPlugin(new HapticWallsSettings { ScaleRatio = 0.25, Gain = 2, MaxForceN = 10 }, PluginContext.Standalone("w")));
+        walls.Set(("fx", 0.1), ("fy", -0.05), ("fz", 0.02)).Tick();
+        Assert.Equal(0.8, walls["fx"], 12);
+
+        walls.Set(("scale_ratio", 0.5)).Tick();
+        Assert.Equal(0.4, walls["fx"], 12);
+        Assert.Equal(-0.2, walls["fy"], 12);
+        Assert.Equal(0.08, walls["fz"], 12);
+
+        foreach (var bad in new[] { 0.0, 0.009, -0.5, 10.5, double.NaN, double.PositiveInfinity })
+        {
+            walls.Set(("scale_ratio", bad)).Tick();
+            Assert.Equal(0.4, walls["fx"], 12);
+        }
+
+        walls.Set(("scale_ratio", 10)).Tick(); // the range's end is a ratio too
+        Assert.Equal(0.02, walls["fx"], 12);
+    }
 }
