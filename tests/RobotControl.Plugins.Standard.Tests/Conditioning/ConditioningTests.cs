@@ -42,6 +42,17 @@ public sealed class ConditioningTests
         }
     }
 
+    [Theory]
+    [InlineData(0.01, 100.4)] // the ends of the ratio setting's range are ratios too
+    [InlineData(10, 500)]
+    public void The_ratio_input_takes_the_ends_of_its_range(double ratio, double x)
+    {
+        var scaling = new PluginDriver(new ScalingPlugin(new ScalingSettings { Ratio = 0.5, ReferenceXMm = 100 }, Context("s")));
+        scaling.Set(("x", 140), ("y", 0), ("z", 0), ("ratio", ratio)).Tick();
+        Assert.Equal(x, scaling.Xyz().Item1, 9);
+        Assert.Equal(ratio, scaling["ratio"]);
+    }
+
     [Fact]
     public void Homing_maps_the_device_home_to_the_origin_through_the_rotation()
     {

@@ -31,6 +31,18 @@ public sealed class HapticWallsForceTests
     }
 
     [Fact]
+    public void The_force_is_the_workspace_force_times_gain_over_ratio_in_a_yawed_frame()
+    {
+        // Yaw 90 deg: the device frame is the robot's turned about z, R = Rz(90). The device force is R^T f: robot y ->
+        // device x, robot x -> device -y, z unchanged; times gain 2 over ratio 0.25.
+        var walls = new PluginDriver(new HapticWallsPlugin(new HapticWallsSettings { YawDeg = 90, ScaleRatio = 0.25, Gain = 2, MaxForceN = 10 }, PluginContext.Standalone("w")));
+        walls.Set(("fx", 0.1), ("fy", -0.05), ("fz", 0.02)).Tick();
+        Assert.Equal(-0.4, walls["fx"], 12);
+        Assert.Equal(-0.8, walls["fy"], 12);
+        Assert.Equal(0.16, walls["fz"], 12);
+    }
+
+    [Fact]
     public void The_scale_ratio_input_sets_the_ratio_from_the_next_tick_and_out_of_range_values_are_ignored()
     {
         // Starts at the setting (0.25: factor 8 with gain 2); the scaling's ratio output changes it to 0.5 (factor 4).
