@@ -204,6 +204,16 @@ public sealed class CrbPositionIkTests
     }
 
     [Fact]
+    public void A_pitch_range_starting_at_90_degrees_leaves_the_arm_pointing_straight_up()
+    {
+        var robot = WithRange(1, 90, 120);
+        var ik = new CrbPositionIk(robot);
+        var joints = new double[4];
+        Assert.Equal(CrbIkStatus.Solved, ik.Solve(new Vector3d(0, 0, ik.UpperArmMm + ik.ForearmMm), joints));
+        Assert.Equal(robot.Joints[1].MinRad, joints[1], 12);
+    }
+
+    [Fact]
     public void The_reach_follows_the_law_of_cosines_over_the_elbow_range()
     {
         // Elbow 30..105°: |p|² = L1² + L2² + 2 L1 L2 cos(elbow), largest at 30°, smallest at 105°.
