@@ -2,6 +2,7 @@ using MathNet.Numerics.LinearAlgebra;
 using RobotControl.Hardware.Model;
 using RobotControl.Kinematics.Forward;
 using RobotControl.Kinematics.Geometry;
+using RobotControl.Kinematics.Tests.Inverse;
 
 namespace RobotControl.Kinematics.Tests.Forward;
 
@@ -65,7 +66,8 @@ public sealed class ForwardArgumentTests
     [Fact]
     public void A_chain_refuses_no_rows_a_row_naming_a_missing_joint_and_a_joint_without_a_row()
     {
-        Assert.Throws<ArgumentException>(() => new KinematicChain([], TwoJoints));
+        var empty = Assert.Throws<ArgumentException>(() => new KinematicChain([], TwoJoints));
+        Assert.Contains("a chain needs at least one DH row", empty.Message, StringComparison.Ordinal);
         var beyond = Assert.Throws<ArgumentException>(() => new KinematicChain([new DhRow(0, 1, 0, 0, 0), new DhRow(0, 1, 0, 0, 2)], TwoJoints));
         Assert.Contains("DH row 1 names joint 2 of 2", beyond.Message, StringComparison.Ordinal);
         var undriven = Assert.Throws<ArgumentException>(() => new KinematicChain([new DhRow(0, 1, 0, 0, 0), new DhRow(0, 1, 0, 0, -1)], TwoJoints));
@@ -85,6 +87,8 @@ public sealed class ForwardArgumentTests
         Assert.False(chain.WithinLimits([0.0, 0.1]));
         Assert.True(chain.WithinLimits([0.0, 0.1], tolerance: 0.11));
         Assert.False(chain.WithinLimits([0.0, 0.1], tolerance: 0.09));
+        Assert.True(chain.WithinLimits([0.0, 1.45], tolerance: 0.06));
+        Assert.False(chain.WithinLimits([0.0, 1.45], tolerance: 0.04));
     }
 
     [Fact]
@@ -131,18 +135,16 @@ public sealed class ForwardArgumentTests
     [Fact]
     public void Manipulability_of_a_joint_subset_matches_a_finite_difference_Jacobian()
     {
-        var chain = new KinematicChain(TestRobots.Lb);
+        // The PUMA-like chain: the axes of joints 2, 3 and 5 do not pass through the base origin.
+        var chain = IkTestData.Puma();
         var state = chain.CreateState();
-        double[] q = [0.3, -0.4, 0.2, 0.9, 0.5];
-        int[] subset = [0, 1, 3];
+        double[] q = [0.3, -0.4, 0.2, 0.9, 0.5, 0.1];
+        int[] subset = [1, 2, 4];
         const double h = 1e-6;
         var columns = new Vector3d[3];
         for (var c = 0; c < 3; c++)
         {
-            var plus = (double[])q.Clone();
-            var minus = (double[])q.Clone();
-            plus[subset[c]] += h;
-            minus[subset[c]] -= h;
+            var (plus, minus) = IkTestData.Nudged(q, subset[c], h);
             state.Update(plus);
             var p = state.ToolPosition;
             state.Update(minus);

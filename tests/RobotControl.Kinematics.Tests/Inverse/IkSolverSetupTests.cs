@@ -87,6 +87,22 @@ public sealed class IkSolverSetupTests
     }
 
     [Fact]
+    public void A_target_beyond_the_range_of_doubles_stretches_the_arm_toward_it_and_reports_the_largest_error()
+    {
+        var chain = new KinematicChain(TestRobots.Crb);
+        var solver = new IkSolver(chain);
+        var solution = new double[4];
+        var seed = new double[4];
+        chain.MidRange(seed);
+        var result = solver.Solve(IkTarget.PositionOnly(new Vector3d(double.MaxValue, -double.MaxValue, -double.MaxValue)), seed, solution);
+        Assert.Equal(IkStatus.Unreachable, result.Status);
+        Assert.Equal(double.MaxValue, result.PositionErrorMm);
+        // The tool ends on the reach sphere in the target's direction (1, -1, -1) / √3, as for any far target.
+        var direction = result.ReachedPosition / result.ReachedPosition.Length;
+        Assert.True((direction - (new Vector3d(1, -1, -1) / Math.Sqrt(3))).Length < 1e-3, $"stretched toward {direction}");
+    }
+
+    [Fact]
     public void A_short_solution_span_is_refused_naming_it()
     {
         var solver = new IkSolver(new KinematicChain(TestRobots.Crb));
