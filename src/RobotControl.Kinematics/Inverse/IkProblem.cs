@@ -84,8 +84,16 @@ internal sealed class IkProblem
             return false;
         }
 
+        // Pulled in along its direction, taken from p scaled to its largest component: |p| itself overflows for a
+        // target near the range of doubles, and FarTargetMm / ∞ would put the target at the origin.
         var norm = SafeLength(p);
-        TargetPosition = norm > FarTargetMm ? p * (FarTargetMm / norm) : p;
+        if (norm > FarTargetMm)
+        {
+            var scaled = p / Math.Max(Math.Abs(p.X), Math.Max(Math.Abs(p.Y), Math.Abs(p.Z)));
+            p = scaled * (FarTargetMm / scaled.Length);
+        }
+
+        TargetPosition = p;
         AxisCount = 0;
         for (var column = 0; column < 3; column++)
         {

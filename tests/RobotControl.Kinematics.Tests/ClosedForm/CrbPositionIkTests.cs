@@ -153,6 +153,11 @@ public sealed class CrbPositionIkTests
     [InlineData(0, "alpha_deg", 10.0, "DH row 1 must be")]
     [InlineData(0, "a_mm", 1.0, "DH row 1 must be")]
     [InlineData(0, "d_mm", 1.0, "DH row 1 must be")]
+    [InlineData(0, "theta_offset_deg", 5.0, "DH row 1 must be")]
+    [InlineData(1, "d_mm", 1.0, "DH row 2 must be")]
+    [InlineData(2, "theta_offset_deg", 5.0, "DH row 3 must be")]
+    [InlineData(3, "alpha_deg", -90.0, "DH row 4 must be")]
+    [InlineData(3, "a_mm", 1.0, "DH row 4 must be")]
     [InlineData(1, "alpha_deg", -90.0, "DH row 2 must be")]
     [InlineData(1, "theta_offset_deg", 5.0, "DH row 2 must be")]
     [InlineData(1, "a_mm", 3.0, "DH row 2 must be")]
@@ -169,6 +174,115 @@ public sealed class CrbPositionIkTests
         json["dh"]![row]![field] = value;
         var changed = RobotLoader.LoadFromText(json.ToJsonString(), TestRobots.PathOf("crb-changed.json"));
         Assert.Contains(message, Assert.Throws<ArgumentException>(() => new CrbPositionIk(changed)).Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Refuses_a_table_of_another_length_saying_how_many_rows_it_found()
+    {
+        var message = Assert.Throws<ArgumentException>(() => new CrbPositionIk(TestRobots.Lb)).Message;
+        Assert.Contains("the CRB closed form needs 5 DH rows, found 6", message, StringComparison.Ordinal);
+    }
+
+    // Ranges that leave no elbow-up (elbow in 0..180°), non-inverted (pitch in -90..90°) solution, each refused.
+    [Theory]
+    [InlineData(1, 100.0, 120.0)]
+    [InlineData(1, -120.0, -100.0)]
+    [InlineData(2, -20.0, -10.0)]
+    public void Refuses_joint_ranges_that_leave_no_elbow_up_non_inverted_solution(int joint, double minDeg, double maxDeg)
+    {
+        var changed = WithRange(joint, minDeg, maxDeg);
+        var message = Assert.Throws<ArgumentException>(() => new CrbPositionIk(changed)).Message;
+        Assert.Contains("the joint ranges leave no elbow-up, non-inverted solution", message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void An_elbow_range_ending_at_0_leaves_the_straight_arm_only()
+    {
+        var ik = new CrbPositionIk(WithRange(2, -10, 0));
+        Assert.Equal(ik.UpperArmMm + ik.ForearmMm, ik.MaxReachMm, 12);
+        Assert.Equal(ik.UpperArmMm + ik.ForearmMm, ik.MinReachMm, 12);
+    }
+
+    [Fact]
+    public void A_pitch_range_starting_at_90_degrees_leaves_the_arm_pointing_straight_up()
+    {
+        var robot = WithRange(1, 90, 120);
+        var ik = new CrbPositionIk(robot);
+        var joints = new double[4];
+        Assert.Equal(CrbIkStatus.Solved, ik.Solve(new Vector3d(0, 0, ik.UpperArmMm + ik.ForearmMm), joints));
+        Assert.Equal(robot.Joints[1].MinRad, joints[1], 12);
+    }
+
+    [Fact]
+    public void The_reach_follows_the_law_of_cosines_over_the_elbow_range()
+    {
+        // Elbow 30..105°: |p|² = L1² + L2² + 2 L1 L2 cos(elbow), largest at 30°, smallest at 105°.
+        var ik = new CrbPositionIk(WithRange(2, 30, 105));
+        double Reach(double elbowDeg) => Math.Sqrt((68.58 * 68.58) + (96.393 * 96.393) + (2 * 68.58 * 96.393 * Math.Cos(elbowDeg * Deg)));
+        Assert.Equal(Reach(30), ik.MaxReachMm, 9);
+        Assert.Equal(Reach(105), ik.MinReachMm, 9);
+    }
+
+    [Fact]
+    public void A_pitch_range_above_the_horizontal_refuses_a_horizontal_target_and_solves_one_within_it()
+    {
+        var robot = WithRange(1, 10, 45);
+        var ik = new CrbPositionIk(robot);
+        var state = new KinematicChain(robot).CreateState();
+        var joints = new double[4];
+        state.Update([0.2, 0, 0.5, 0]); // pitch 0, below the range
+        Assert.Equal(CrbIkStatus.JointLimit, ik.Solve(state.ToolPosition, joints));
+        state.Update([0.2, 20 * Deg, 0.5, 0]);
+        Assert.Equal(CrbIkStatus.Solved, ik.Solve(state.ToolPosition, joints));
+        Assert.Equal([0.2, 20 * Deg, 0.5], joints[..3], (a, b) => Math.Abs(a - b) < 1e-9);
+    }
+
+    [Fact]
+    public void Needs_room_for_exactly_the_three_position_joints()
+    {
+        var ik = new CrbPositionIk(TestRobots.Crb);
+        var state = new KinematicChain(TestRobots.Crb).CreateState();
+        state.Update([0.1, -0.2, 0.9, 0]);
+        var three = new double[3];
+        Assert.Equal(CrbIkStatus.Solved, ik.Solve(state.ToolPosition, three));
+        Assert.Equal([0.1, -0.2, 0.9], three, (a, b) => Math.Abs(a - b) < 1e-9);
+        Assert.Throws<ArgumentException>(() => ik.Solve(state.ToolPosition, new double[2]));
+    }
+
+    [Fact]
+    public void At_the_least_reach_the_elbow_is_exactly_on_its_limit()
+    {
+        var robot = TestRobots.Crb;
+        var ik = new CrbPositionIk(robot);
+        var state = new KinematicChain(robot).CreateState();
+        state.Update([0.2, -0.3, robot.Joints[2].MaxRad, 0]);
+        var joints = new double[4];
+        Assert.Equal(CrbIkStatus.Solved, ik.Solve(state.ToolPosition, joints));
+        Assert.Equal(robot.Joints[2].MaxRad, joints[2]);
+        Assert.Equal(0.2, joints[0], 9);
+        Assert.Equal(-0.3, joints[1], 9);
+    }
+
+    [Fact]
+    public void Pointing_nearly_down_with_the_elbow_straight_the_yaw_comes_from_the_target_not_the_seed()
+    {
+        // 0.2° off the vertical: the tool sits (L1 + L2) sin 0.2° ≈ 0.58 mm from the yaw axis, far above rounding.
+        var robot = TestRobots.Crb;
+        var ik = new CrbPositionIk(robot);
+        var state = new KinematicChain(robot).CreateState();
+        state.Update([0.3, -89.8 * Deg, 0, 0]);
+        var joints = new double[4];
+        Assert.Equal(CrbIkStatus.Solved, ik.Solve(state.ToolPosition, joints));
+        Assert.Equal(0.3, joints[0], 9);
+        Assert.Equal(-89.8 * Deg, joints[1], 9);
+    }
+
+    private static Hardware.Model.RobotDefinition WithRange(int joint, double minDeg, double maxDeg)
+    {
+        var json = JsonNode.Parse(File.ReadAllText(TestRobots.PathOf("crb-1.0.json")))!;
+        json["joints"]![joint]!["min_deg"] = minDeg;
+        json["joints"]![joint]!["max_deg"] = maxDeg;
+        return RobotLoader.LoadFromText(json.ToJsonString(), TestRobots.PathOf("crb-ranges.json"));
     }
 
     [Fact]

@@ -49,4 +49,63 @@ public sealed class BoundedLevenbergMarquardtTests
         Assert.Equal(BoundedLevenbergMarquardt.Outcome.Stalled, outcome);
         Assert.Equal(0.5, q[0]);
     }
+
+    private static (BoundedLevenbergMarquardt.Outcome Outcome, double[] Q, int Budget) Run(KinematicChain chain, double[] start, double targetAngle, int budget, int maxSteps) =>
+        Run(chain, start, new Vector3d(150 * Math.Cos(targetAngle), 150 * Math.Sin(targetAngle), 0), budget, maxSteps);
+
+    private static (BoundedLevenbergMarquardt.Outcome Outcome, double[] Q, int Budget) Run(KinematicChain chain, double[] start, Vector3d target, int budget, int maxSteps)
+    {
+        var problem = new IkProblem(chain, new IkOptions { PositionToleranceMm = 1e-9 });
+        problem.SetTarget(IkTarget.PositionOnly(target));
+        var q = (double[])start.Clone();
+        var cost = problem.Evaluate(q);
+        var outcome = new BoundedLevenbergMarquardt(chain).Run(problem, q, ref cost, ref budget, maxSteps, 0);
+        Assert.Equal(problem.Evaluate(q), cost);
+        return (outcome, q, budget);
+    }
+
+    [Fact]
+    public void No_budget_or_no_steps_allowed_leaves_the_joints_untouched()
+    {
+        var (outcome, q, budget) = Run(PlanarArm(-0.5, 0.5), [0, 0], 0.3, budget: 0, maxSteps: 10);
+        Assert.Equal(BoundedLevenbergMarquardt.Outcome.OutOfBudget, outcome);
+        Assert.Equal([0.0, 0.0], q);
+        Assert.Equal(0, budget);
+
+        (outcome, q, budget) = Run(PlanarArm(-0.5, 0.5), [0, 0], 0.3, budget: 10, maxSteps: 0);
+        Assert.Equal(BoundedLevenbergMarquardt.Outcome.OutOfBudget, outcome);
+        Assert.Equal([0.0, 0.0], q);
+        Assert.Equal(10, budget);
+    }
+
+    [Fact]
+    public void Each_trial_step_costs_one_unit_of_budget_and_a_run_stops_at_its_step_limit()
+    {
+        // The target is 2.5 rad round: more than three steps of at most 1 rad each.
+        var (outcome, q, budget) = Run(PlanarArm(), [0, 0], 2.5, budget: 100, maxSteps: 3);
+        Assert.Equal(BoundedLevenbergMarquardt.Outcome.OutOfBudget, outcome);
+        Assert.Equal(97, budget);
+        Assert.InRange(q[0], 0.5, 3.0 + 1e-12);
+    }
+
+    [Fact]
+    public void A_step_turns_no_joint_by_more_than_1_rad()
+    {
+        // One 150 mm link about z, target (0, 400): r = (150, -400), J = (0, 150), so the Gauss-Newton step is
+        // 400 / 150 ≈ 2.67 rad (a little less with the damping). It is scaled down to 1 rad, which lowers the
+        // distance from 427 mm to 286 mm, so it is taken.
+        var link = new KinematicChain([new DhRow(0, 150, 0, 0, 0)], [new JointDefinition("turn", "q0", -Math.PI, Math.PI, "test")]);
+        var (_, q, budget) = Run(link, [0], new Vector3d(0, 400, 0), budget: 100, maxSteps: 1);
+        Assert.Equal(99, budget);
+        Assert.Equal(1.0, q[0], 1e-9);
+    }
+
+    [Fact]
+    public void A_joint_pinned_at_a_bound_keeps_its_value_while_the_others_move()
+    {
+        // Joint 1 (within ±0.01 rad) sits on its max and the target lies beyond it: it stays there exactly.
+        var (_, q, _) = Run(PlanarArm(), [0, 0.01], 0.5, budget: 100, maxSteps: 1);
+        Assert.Equal(0.01, q[1]);
+        Assert.True(q[0] > 0.05, $"joint 0 should have moved toward the target, at {q[0]}");
+    }
 }

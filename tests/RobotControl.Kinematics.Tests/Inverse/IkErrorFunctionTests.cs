@@ -19,7 +19,7 @@ public sealed class IkErrorFunctionTests
     public void The_gradient_of_E_matches_central_finite_differences(string file, OrientationAxes axes)
     {
         var chain = new KinematicChain(TestRobots.ByFile(file));
-        var solver = new IkSolver(chain);
+        var solver = new IkSolver(chain, new IkOptions { PositionWeight = 3 }); // not 1, so a misplaced weight shows
         var random = new Random(17);
         var n = chain.JointCount;
         var gradient = new double[n];
@@ -34,10 +34,7 @@ public sealed class IkErrorFunctionTests
             for (var i = 0; i < n; i++)
             {
                 const double h = 1e-6;
-                var plus = (double[])q.Clone();
-                var minus = (double[])q.Clone();
-                plus[i] += h;
-                minus[i] -= h;
+                var (plus, minus) = IkTestData.Nudged(q, i, h);
                 var numeric = (solver.SpecError(target, plus) - solver.SpecError(target, minus)) / (2 * h);
                 Assert.True(Math.Abs(numeric - gradient[i]) <= 1e-6 * (1 + Math.Abs(numeric)),
                     $"joint {i}: analytic {gradient[i]}, numeric {numeric}");
@@ -92,7 +89,7 @@ public sealed class IkErrorFunctionTests
     public void A_CCD_cycle_matches_a_cycle_that_recomputes_every_frame_and_never_raises_the_error(string file, OrientationAxes axes)
     {
         var chain = new KinematicChain(TestRobots.ByFile(file));
-        var options = new IkOptions();
+        var options = new IkOptions { PositionWeight = 3 }; // not 1, so a misplaced weight shows
         var solver = new IkSolver(chain, options);
         var problem = solver.Problem;
         var random = new Random(9);

@@ -70,5 +70,15 @@ internal static class IkTestData
         }
     }
 
+    /// <summary>Copies of <paramref name="q"/> with joint <paramref name="joint"/> moved by +h and -h, for central differences.</summary>
+    public static (double[] Plus, double[] Minus) Nudged(double[] q, int joint, double h)
+    {
+        var plus = (double[])q.Clone();
+        var minus = (double[])q.Clone();
+        plus[joint] += h;
+        minus[joint] -= h;
+        return (plus, minus);
+    }
+
     public static double Angle(Vector3d a, Vector3d b) => Math.Atan2(Vector3d.Cross(a, b).Length, Vector3d.Dot(a, b));
 }
