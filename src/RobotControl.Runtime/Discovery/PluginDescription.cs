@@ -18,6 +18,8 @@ namespace RobotControl.Runtime.Discovery;
 /// <param name="Location">Where the assembly was loaded from.</param>
 /// <param name="Ports">The ports of an instance with the given settings, or null when creating one failed.</param>
 /// <param name="PortsProblem">Why <paramref name="Ports"/> is null, else null.</param>
+/// <param name="PortsFrom">Null when the ports are those of an instance with default settings; else the example
+/// instance whose settings made them (<c>touch_right in teleop-lb.json</c>).</param>
 /// <param name="Settings">The settings schema (empty when the type has no settings).</param>
 public sealed record PluginDescription(
     string Name,
@@ -29,18 +31,25 @@ public sealed record PluginDescription(
     string Location,
     PluginPorts? Ports,
     string? PortsProblem,
-    IReadOnlyList<SettingDescription> Settings)
+    IReadOnlyList<SettingDescription> Settings,
+    string? PortsFrom = null)
 {
     /// <summary>
     /// Describes <paramref name="type"/>. Ports are declared by the constructor, so an instance is created with
     /// default settings on <paramref name="robot"/> (if given) and disposed at once; it opens no device and runs no
-    /// tick.
+    /// tick. When the defaults cannot make one and <paramref name="example"/> is given, its settings make it.
     /// </summary>
-    public static PluginDescription Of(PluginTypeInfo type, RobotDefinition? robot, string baseDirectory)
+    public static PluginDescription Of(PluginTypeInfo type, RobotDefinition? robot, string baseDirectory, PluginExample? example = null)
     {
         ArgumentNullException.ThrowIfNull(type);
         var assembly = type.AssemblyName;
-        PluginPorts.TryCreate(type, null, robot, baseDirectory, out var ports, out var problem);
+        string? from = null;
+        if (!PluginPorts.TryCreate(type, null, robot, baseDirectory, out var ports, out var problem) && example is not null
+            && PluginPorts.TryCreate(type, example.Settings, robot, example.BaseDirectory, out ports, out _))
+        {
+            (problem, from) = (null, $"{example.Instance} in {example.GraphFile}");
+        }
+
         return new PluginDescription(
             type.Name,
             type.Description,
@@ -51,6 +60,7 @@ public sealed record PluginDescription(
             type.AssemblyLocation,
             ports,
             problem,
-            type.Settings is null ? [] : [.. type.Settings.Settings.Select(SettingDescription.Of)]);
+            type.Settings is null ? [] : [.. type.Settings.Settings.Select(SettingDescription.Of)],
+            from);
     }
 }

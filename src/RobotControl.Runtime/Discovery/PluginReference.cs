@@ -26,7 +26,7 @@ public static class PluginReference
             ? "Ports that depend on the robot are not listed (no robot given).\n\n"
             : $"Ports that depend on the robot (one per joint, for example) are those on {robotName}.\n\n");
         text.Append("This file is written by the command below, never by hand; tests fail when it and the plug-ins disagree.\n\n");
-        text.Append("    dotnet run --project src/RobotControl.Cli -- plugins --markdown --robot hardware/robots/lb-1.0.json > docs/plugin-reference.md\n\n");
+        text.Append("    dotnet run --project src/RobotControl.Cli -- plugins --markdown --robot hardware/robots/lb-1.0.json --examples graphs/teleop-lb.json > docs/plugin-reference.md\n\n");
         foreach (var plugin in list)
         {
             text.Append(Section(plugin));
@@ -49,6 +49,11 @@ public static class PluginReference
         }
         else
         {
+            if (plugin.PortsFrom is { } from)
+            {
+                text.Append("Ports of an instance with the settings of ").Append(Cell(from)).Append(" (the defaults cannot make one):\n\n");
+            }
+
             Table(text, ["input", "units", "initial", "description"], plugin.Ports.Inputs.Select(p => new[] { Code(p.Name), p.Units, Number(p.InitialValue), p.Description }));
             Table(text, ["output", "units", "initial", "safe value", "description"], plugin.Ports.Outputs.Select(p => new[] { Code(p.Name), p.Units, Number(p.InitialValue), p.SafeValue ?? string.Empty, p.Description }));
         }

@@ -29,14 +29,17 @@ internal sealed class PluginsCommand : ICliCommand
         var robot = new Option<FileInfo?>("--robot") { Description = "Robot file to create the plug-ins with, for plug-ins whose ports depend on the robot (e.g. one per joint)" };
         var json = new Option<bool>("--json") { Description = "Write JSON (for scripts) instead of the table" };
         var markdown = new Option<bool>("--markdown") { Description = "Write the Markdown reference (docs/plugin-reference.md) instead of the table" };
+        var examples = new Option<FileInfo?>("--examples") { Description = "Graph file whose instances' settings describe the types whose defaults cannot make an instance (e.g. a simulated touch without a script)" };
         var command = new Command("plugins", "List the plug-in types found: ports with units, settings with ranges, assembly and SDK version.");
         command.Options.Add(plugins);
         command.Options.Add(robot);
         command.Options.Add(json);
         command.Options.Add(markdown);
+        command.Options.Add(examples);
         command.SetAction(parse => Run(
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(robot)?.FullName,
+            parse.GetValue(examples)?.FullName,
             Format(parse.GetValue(json), parse.GetValue(markdown)),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
@@ -44,7 +47,11 @@ internal sealed class PluginsCommand : ICliCommand
     }
 
     /// <summary>Runs the command; returns 0, or 2 when the folder or robot file is unusable or both formats are asked.</summary>
-    internal static int Run(string? pluginsFolder, string? robotPath, PluginsFormat format, TextWriter output, TextWriter error)
+    internal static int Run(string? pluginsFolder, string? robotPath, PluginsFormat format, TextWriter output, TextWriter error) =>
+        Run(pluginsFolder, robotPath, null, format, output, error);
+
+    /// <summary>As above, with a graph file whose instances describe the types whose defaults cannot make one.</summary>
+    internal static int Run(string? pluginsFolder, string? robotPath, string? examplesGraph, PluginsFormat format, TextWriter output, TextWriter error)
     {
         if (format == PluginsFormat.Conflicting)
         {
@@ -73,6 +80,20 @@ internal sealed class PluginsCommand : ICliCommand
         }
 
         var catalog = RunCommand.Catalog(pluginsFolder);
+        Dictionary<string, PluginExample> examples = [];
+        if (examplesGraph is not null)
+        {
+            try
+            {
+                examples = PluginExample.FromGraph(examplesGraph, catalog);
+            }
+            catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or System.Text.Json.JsonException)
+            {
+                error.WriteLine($"--examples: {examplesGraph}: {ex.Message.Split('\n')[0].Trim()}");
+                return 2;
+            }
+        }
+
         foreach (var problem in catalog.Problems)
         {
             error.WriteLine($"plug-ins: {problem}");
@@ -80,7 +101,7 @@ internal sealed class PluginsCommand : ICliCommand
 
         var listings = catalog.Types
             .OrderBy(t => t.Name, StringComparer.Ordinal)
-            .Select(t => PluginDescription.Of(t, robot, Directory.GetCurrentDirectory()))
+            .Select(t => PluginDescription.Of(t, robot, Directory.GetCurrentDirectory(), examples.GetValueOrDefault(t.Name)))
             .ToList();
         switch (format)
         {

@@ -47,7 +47,7 @@ public sealed class PluginsCommandTests
     {
         var output = new StringWriter();
         var error = new StringWriter();
-        Assert.Equal(0, PluginsCommand.Run(null, Cli.RepoFile("hardware/robots/lb-1.0.json"), PluginsFormat.Markdown, output, error));
+        Assert.Equal(0, PluginsCommand.Run(null, Cli.RepoFile("hardware/robots/lb-1.0.json"), Cli.RepoFile("graphs/teleop-lb.json"), PluginsFormat.Markdown, output, error));
         Assert.Equal(string.Empty, error.ToString());
 
         var kept = File.ReadAllText(Cli.RepoFile("docs/plugin-reference.md")).ReplaceLineEndings("\n");
@@ -56,6 +56,17 @@ public sealed class PluginsCommandTests
             "docs/plugin-reference.md differs from what the plug-ins declare: regenerate it with the command at its top");
         Assert.Contains("## inverse_kinematics", kept, StringComparison.Ordinal);
         Assert.Contains("| `right.elbow` | rad |", kept, StringComparison.Ordinal); // a port per joint of LB-1.0
+        Assert.Contains("Ports of an instance with the settings of touch_right in teleop-lb.json", kept, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void An_examples_file_that_is_not_a_graph_is_one_line_naming_it()
+    {
+        var (code, output, error) = Cli.Run("plugins", "--markdown", "--examples", Cli.RepoFile("README.md"));
+        Assert.Equal(2, code);
+        Assert.StartsWith($"--examples: {Cli.RepoFile("README.md")}: ", error, StringComparison.Ordinal);
+        Assert.Single(error.TrimEnd().Split('\n'));
+        Assert.Equal(string.Empty, output);
     }
 
     [Fact]

@@ -1,0 +1,55 @@
+using System.Text.Json;
+using RobotControl.Hardware.Json;
+using RobotControl.Plugins.Sdk.Settings;
+
+namespace RobotControl.Runtime.Discovery;
+
+/// <summary>
+/// Settings of one instance in a graph file, to describe a type whose ports cannot be made from its defaults (e.g. a
+/// simulated Touch needs its hand script): its ports are those an instance with these settings declares.
+/// </summary>
+/// <param name="Settings">The instance's settings, read and checked by the type's schema.</param>
+/// <param name="Instance">The instance's name in the graph.</param>
+/// <param name="GraphFile">The graph file's name (without its folder).</param>
+/// <param name="BaseDirectory">The graph's folder: file paths in the settings are relative to it.</param>
+public sealed record PluginExample(PluginSettings? Settings, string Instance, string GraphFile, string BaseDirectory)
+{
+    /// <summary>
+    /// The first instance of each type of <paramref name="catalog"/> in the graph file <paramref name="graphPath"/>
+    /// whose settings read without a problem, by type name.
+    /// </summary>
+    /// <exception cref="IOException">The file cannot be read.</exception>
+    /// <exception cref="JsonException">The file is not JSON.</exception>
+    public static Dictionary<string, PluginExample> FromGraph(string graphPath, PluginCatalog catalog)
+    {
+        ArgumentNullException.ThrowIfNull(graphPath);
+        ArgumentNullException.ThrowIfNull(catalog);
+        using var document = JsonDocument.Parse(File.ReadAllText(graphPath));
+        var examples = new Dictionary<string, PluginExample>(StringComparer.Ordinal);
+        if (!document.RootElement.TryGetProperty("instances", out var instances) || instances.ValueKind != JsonValueKind.Array)
+        {
+            return examples;
+        }
+
+        var folder = Path.GetDirectoryName(Path.GetFullPath(graphPath))!;
+        foreach (var item in instances.EnumerateArray())
+        {
+            if (item.ValueKind != JsonValueKind.Object
+                || !item.TryGetProperty("name", out var name) || name.ValueKind != JsonValueKind.String
+                || !item.TryGetProperty("type", out var type) || type.ValueKind != JsonValueKind.String
+                || catalog.Find(type.GetString()!) is not { } info || examples.ContainsKey(info.Name))
+            {
+                continue;
+            }
+
+            var errors = new List<JsonProblem>();
+            var settings = info.Settings?.Read(item.TryGetProperty("settings", out var s) ? s : default, errors);
+            if (errors.Count == 0)
+            {
+                examples[info.Name] = new PluginExample(settings, name.GetString()!, Path.GetFileName(graphPath), folder);
+            }
+        }
+
+        return examples;
+    }
+}
