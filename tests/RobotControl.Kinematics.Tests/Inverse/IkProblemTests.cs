@@ -25,6 +25,8 @@ public sealed class IkProblemTests
         Assert.True(problem.SetTarget(IkTarget.PositionOnly(new Vector3d(double.MaxValue, double.MaxValue, 0))));
         var expected = new Vector3d(1, 1, 0) * (IkProblem.FarTargetMm / Math.Sqrt(2));
         Assert.True((problem.TargetPosition - expected).Length < 1e-6, $"pulled in to {problem.TargetPosition}");
+        Assert.True(problem.SetTarget(IkTarget.PositionOnly(new Vector3d(1, double.MaxValue, 0))));
+        Assert.True((problem.TargetPosition - new Vector3d(0, IkProblem.FarTargetMm, 0)).Length < 1e-6, $"pulled in to {problem.TargetPosition}");
     }
 
     [Fact]
