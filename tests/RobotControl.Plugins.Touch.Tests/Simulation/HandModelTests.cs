@@ -40,33 +40,22 @@ public sealed class HandModelTests
         Assert.Equal([0.0, 0.0, 0.0], hand.Velocity.ToArray());
     }
 
-    [Fact]
-    public void One_sub_step_is_one_semi_implicit_euler_step()
+    // m = 0.25 kg, k = 0.2 N/mm, b = 0, hand still at the handle at 0, 1 N along x, sub-steps h = 0.25 ms.
+    // One: a = 1 N / 0.25 kg = 4 m/s² = 4000 mm/s²; v = 4000 * 0.00025 = 1 mm/s; x = 1 * 0.00025 = 0.00025 mm.
+    // Two: spring 0.2 * -0.00025 = -0.00005 N, a = 0.99995 N / 0.25 kg = 3999.8 mm/s², v = 1 + 3999.8 * 0.00025
+    // = 1.99995 mm/s, x = 0.00025 + 1.99995 * 0.00025 = 0.0007499875 mm.
+    [Theory]
+    [InlineData(0.00025, 1.0, 0.00025)]
+    [InlineData(0.0005, 1.99995, 0.0007499875)]
+    public void A_step_is_semi_implicit_euler_in_sub_steps_of_a_quarter_millisecond(double seconds, double velocity, double position)
     {
-        // m = 0.25 kg, k = 0.2 N/mm, b = 0, hand at the handle, 1 N along x, h = 0.25 ms:
-        // a = 1 N / 0.25 kg = 4 m/s² = 4000 mm/s²; v = 4000 * 0.00025 = 1 mm/s; x = 1 * 0.00025 = 0.00025 mm.
         var hand = new HandModel(0.25, 0.2, 0);
         hand.Reset(Origin);
 
-        hand.Step(0.00025, Origin, Origin, 1, 0, 0);
+        hand.Step(seconds, Origin, Origin, 1, 0, 0);
 
-        Assert.Equal(1.0, hand.Velocity[0], 12);
-        Assert.Equal(0.00025, hand.Position[0], 15);
-    }
-
-    [Fact]
-    public void Half_a_millisecond_is_exactly_two_sub_steps()
-    {
-        // Second sub-step from x = 0.00025 mm, v = 1 mm/s: spring 0.2 * -0.00025 = -0.00005 N,
-        // a = 0.99995 N / 0.25 kg = 3999.8 mm/s², v = 1 + 3999.8 * 0.00025 = 1.99995 mm/s,
-        // x = 0.00025 + 1.99995 * 0.00025 = 0.0007499875 mm.
-        var hand = new HandModel(0.25, 0.2, 0);
-        hand.Reset(Origin);
-
-        hand.Step(0.0005, Origin, Origin, 1, 0, 0);
-
-        Assert.Equal(1.99995, hand.Velocity[0], 12);
-        Assert.Equal(0.0007499875, hand.Position[0], 15);
+        Assert.Equal(velocity, hand.Velocity[0], 12);
+        Assert.Equal(position, hand.Position[0], 15);
     }
 
     [Fact]

@@ -18,16 +18,12 @@ public sealed class HandScriptTests
         return (pose, velocity, button1, button2);
     }
 
-    [Fact]
-    public void Every_column_of_a_script_is_read_by_its_name_in_any_order()
+    [Theory]
+    [InlineData("button2,yaw_rad,pitch_rad,roll_rad,z_mm,y_mm,x_mm,button1,time_s", "")] // a script
+    [InlineData("p.button2,p.yaw,p.pitch,p.roll,p.z,p.y,p.x,p.button1,time_s", "p.")] // a recording
+    public void Every_column_is_read_by_its_name_in_any_order(string header, string prefix)
     {
-        var script = HandScript.Parse(
-            [
-                "button2,yaw_rad,pitch_rad,roll_rad,z_mm,y_mm,x_mm,button1,time_s",
-                "1,0.3,0.2,0.1,3,2,1,1,0",
-                "0,0,0,0,0,0,0,0,2",
-            ],
-            "s.csv");
+        var script = HandScript.Parse([header, "1,0.3,0.2,0.1,3,2,1,1,0", "0,0,0,0,0,0,0,0,2"], "s.csv", prefix);
 
         var (pose, _, button1, button2) = At(script, 0);
 
@@ -35,25 +31,6 @@ public sealed class HandScriptTests
         Assert.True(button1);
         Assert.True(button2);
         Assert.Equal(2.0, script.DurationSeconds);
-    }
-
-    [Fact]
-    public void Every_column_of_a_recording_is_read_by_its_prefixed_name()
-    {
-        var script = HandScript.Parse(
-            [
-                "p.button2,p.yaw,p.pitch,p.roll,p.z,p.y,p.x,p.button1,time_s",
-                "1,0.3,0.2,0.1,3,2,1,1,0",
-                "0,0,0,0,0,0,0,0,2",
-            ],
-            "rec.csv",
-            "p.");
-
-        var (pose, _, button1, button2) = At(script, 0);
-
-        Assert.Equal([1.0, 2.0, 3.0, 0.1, 0.2, 0.3], pose);
-        Assert.True(button1);
-        Assert.True(button2);
     }
 
     [Fact]
