@@ -18,7 +18,9 @@ else
 fi
 
 echo "== .NET (xunit)"
-dotnet test RobotControl.sln -c Release --nologo 2>&1 | tee -a "$log" | grep -E "^(Passed|Failed)!|error|\[FAIL\]|Failed [A-Za-z]" || true
+# Summaries, and for a failed test its message (up to its stack trace), so that a CI log says why.
+dotnet test RobotControl.sln -c Release --nologo 2>&1 | tee -a "$log" \
+  | awk '/^(Passed|Failed)!|error|\[FAIL\]/ { print; next } /^  Failed [A-Za-z]/ { print; show = 1; next } /Stack Trace:/ { show = 0 } show { print }' || true
 [ "${PIPESTATUS[0]}" = 0 ] || status=1
 
 read -r cf ct < <(sed -nE 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\1 \2/p' "$log" | awk '{f+=$1; t+=$2} END {print f+0, t+0}')
