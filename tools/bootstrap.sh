@@ -20,6 +20,8 @@ command -v check_urdf >/dev/null 2>&1 || need+=(liburdfdom-tools)
 # pins, run by the .NET build; docs/dependencies.md says why not npm ci).
 [ -x /usr/bin/chromium ] || need+=(chromium)
 command -v npm >/dev/null 2>&1 || need+=(nodejs npm)
+# Python runs the graph and trajectory generators, the firmware's mutation list, and wraps the CLI's Ctrl+C tests.
+command -v python3 >/dev/null 2>&1 || need+=(python3)
 # `bench realtime`'s busy scenario keeps one core busy with stress-ng (bench/RobotControl.Bench/Realtime).
 command -v stress-ng >/dev/null 2>&1 || need+=(stress-ng)
 # ... and measures the machine's own scheduling latency with cyclictest (rt-tests) before each scenario.

@@ -20,7 +20,14 @@ internal sealed class RunProcess : IDisposable
     /// <summary>Starts <c>robotctl</c> with <paramref name="args"/>; with <paramref name="typing"/>, its standard input is a pipe for <see cref="Type"/>.</summary>
     public RunProcess(bool typing, params string[] args)
     {
-        var start = new ProcessStartInfo("dotnet") { RedirectStandardInput = typing, RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        // robotctl runs as from an operator's terminal, where Ctrl+C reaches it. A test run started from a background
+        // job of a script inherits SIGINT ignored (POSIX), and .NET keeps an inherited SIG_IGN for SIGINT, so the
+        // child is exec'd through a one-line Python wrapper that restores the default first (a shell cannot: it may
+        // not reset a signal ignored on entry). The process ID stays robotctl's.
+        var start = new ProcessStartInfo("python3") { RedirectStandardInput = typing, RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        start.ArgumentList.Add("-c");
+        start.ArgumentList.Add("import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execvp(sys.argv[1], sys.argv[1:])");
+        start.ArgumentList.Add("dotnet");
         start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "robotctl.dll"));
         foreach (var a in args)
         {
