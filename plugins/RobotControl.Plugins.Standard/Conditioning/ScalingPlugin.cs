@@ -16,7 +16,7 @@ public sealed class ScalingPlugin : Plugin<ScalingSettings>
     /// <summary>The input that carries the ratio.</summary>
     public const string RatioInput = "ratio";
 
-    private static readonly SettingDescriptor RatioSetting = SettingsSchema.For(typeof(ScalingSettings)).Settings.Single(s => s.JsonName == "ratio");
+    private static readonly SettingDescriptor RatioSetting = SettingsSchema.For(typeof(ScalingSettings)).Find(RatioInput)!;
     private readonly InputPort[] _in;
     private readonly OutputPort[] _out;
     private readonly InputPort _ratioIn;
@@ -37,17 +37,11 @@ public sealed class ScalingPlugin : Plugin<ScalingSettings>
         _ratioOut = DeclareOutput(RatioInput, SafeValue.HoldLastFinite, "", "the motion ratio in effect (for the haptic walls, which undo it)", Settings.Ratio);
     }
 
-    /// <summary>Smallest ratio the input takes (the setting's range).</summary>
-    public static double MinimumRatio => RatioSetting.Minimum;
-
-    /// <summary>Largest ratio the input takes.</summary>
-    public static double MaximumRatio => RatioSetting.Maximum;
-
     /// <inheritdoc />
     public override void Tick(in TickContext context)
     {
         var requested = Read(_ratioIn);
-        if (requested >= RatioSetting.Minimum && requested <= RatioSetting.Maximum)
+        if (RatioSetting.Accepts(requested))
         {
             _ratio = requested;
         }

@@ -25,7 +25,7 @@ public sealed class HapticWallsPlugin : Plugin<HapticWallsSettings>
     private readonly OutputPort _outY;
     private readonly OutputPort _outZ;
     private readonly DeviceFrame _frame;
-    private static readonly SettingDescriptor RatioSetting = SettingsSchema.For(typeof(HapticWallsSettings)).Settings.Single(s => s.JsonName == "scale_ratio");
+    private static readonly SettingDescriptor RatioSetting = SettingsSchema.For(typeof(HapticWallsSettings)).Find("scale_ratio")!;
 
     private readonly InputPort _ratio;
     private readonly Vector3d _sign;
@@ -52,7 +52,7 @@ public sealed class HapticWallsPlugin : Plugin<HapticWallsSettings>
     public override void Tick(in TickContext context)
     {
         var ratio = Read(_ratio);
-        if (ratio >= RatioSetting.Minimum && ratio <= RatioSetting.Maximum)
+        if (RatioSetting.Accepts(ratio))
         {
             _scale = Settings.Gain / ratio;
         }

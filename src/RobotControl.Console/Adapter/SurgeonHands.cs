@@ -131,7 +131,7 @@ internal sealed class SurgeonHands
             : 0;
 
     private static SettingDescriptor? Setting(Plugin plugin, string name) =>
-        plugin.SettingsObject is { } settings ? SettingsSchema.For(settings.GetType()).Settings.FirstOrDefault(s => s.JsonName == name) : null;
+        plugin.SettingsObject is { } settings ? SettingsSchema.For(settings.GetType()).Find(name) : null;
 
     /// <summary>One hand.</summary>
     internal sealed record Hand(

@@ -1,5 +1,4 @@
 using System.Text.Json;
-using RobotControl.Hardware.Json;
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
 using RobotControl.Plugins.Sdk;
@@ -62,24 +61,11 @@ internal static class EditorCatalog
             ports[RobotNode.InstanceName] = Ports(new RobotNode(robot, TimeProvider.System, baseDirectory));
         }
 
-        if (!root.TryGetProperty("instances", out var instances) || instances.ValueKind != JsonValueKind.Array)
+        foreach (var (name, type, settings) in GraphInstances.Read(root, catalog))
         {
-            return ports;
-        }
-
-        foreach (var item in instances.EnumerateArray())
-        {
-            if (item.ValueKind != JsonValueKind.Object || !item.TryGetProperty("name", out var n) || n.ValueKind != JsonValueKind.String
-                || !item.TryGetProperty("type", out var t) || t.ValueKind != JsonValueKind.String || catalog.Find(t.GetString()!) is not { } type)
+            if (PluginPorts.TryCreate(type, settings, robot, baseDirectory, out var found, out _))
             {
-                continue;
-            }
-
-            var errors = new List<JsonProblem>();
-            var settings = type.Settings?.Read(item.TryGetProperty("settings", out var s) ? s : default, errors);
-            if (errors.Count == 0 && PluginPorts.TryCreate(type, settings, robot, baseDirectory, out var found, out _))
-            {
-                ports[n.GetString()!] = found!;
+                ports[name] = found!;
             }
         }
 

@@ -25,7 +25,15 @@ public sealed record SettingDescriptor(
     bool IsFilePath,
     bool Required,
     object? DefaultValue,
-    IReadOnlyList<string> EnumNames);
+    IReadOnlyList<string> EnumNames)
+{
+    /// <summary>
+    /// True when <paramref name="value"/> is finite and inside <see cref="Minimum"/>..<see cref="Maximum"/> (a NaN
+    /// bound is no bound): what a graph file's value must be, and what an input that takes this setting's values at
+    /// run time (a scaling ratio, for example) accepts.
+    /// </summary>
+    public bool Accepts(double value) => double.IsFinite(value) && !(value < Minimum) && !(value > Maximum);
+}
 
 /// <summary>Value kinds a setting may have.</summary>
 public enum SettingKind

@@ -75,6 +75,13 @@ public sealed class SettingsSchema
         return Cache.GetOrAdd(settingsType, static t => new SettingsSchema(t));
     }
 
+    /// <summary>The setting named <paramref name="jsonName"/> in graph files, or null when there is none.</summary>
+    public SettingDescriptor? Find(string jsonName)
+    {
+        ArgumentNullException.ThrowIfNull(jsonName);
+        return Settings.FirstOrDefault(s => s.JsonName == jsonName);
+    }
+
     /// <summary>A settings object holding every default.</summary>
     public PluginSettings CreateDefault() => (PluginSettings)Activator.CreateInstance(SettingsType)!;
 
@@ -254,7 +261,7 @@ public sealed class SettingsSchema
         {
             errors.Add(new JsonProblem(s.JsonName, "must be a finite number"));
         }
-        else if ((!double.IsNaN(s.Minimum) && value < s.Minimum) || (!double.IsNaN(s.Maximum) && value > s.Maximum))
+        else if (!s.Accepts(value))
         {
             errors.Add(new JsonProblem(s.JsonName, string.Create(CultureInfo.InvariantCulture, $"{value} is outside {Bound(s.Minimum)}..{Bound(s.Maximum)}{(s.Units.Length > 0 ? " " + s.Units : "")}")));
         }

@@ -1,5 +1,4 @@
 using System.Text.Json;
-using RobotControl.Hardware.Json;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Runtime.Discovery;
@@ -25,29 +24,11 @@ public sealed record PluginExample(PluginSettings? Settings, string Instance, st
         ArgumentNullException.ThrowIfNull(graphPath);
         ArgumentNullException.ThrowIfNull(catalog);
         using var document = JsonDocument.Parse(File.ReadAllText(graphPath));
-        var examples = new Dictionary<string, PluginExample>(StringComparer.Ordinal);
-        if (!document.RootElement.TryGetProperty("instances", out var instances) || instances.ValueKind != JsonValueKind.Array)
-        {
-            return examples;
-        }
-
         var folder = Path.GetDirectoryName(Path.GetFullPath(graphPath))!;
-        foreach (var item in instances.EnumerateArray())
+        var examples = new Dictionary<string, PluginExample>(StringComparer.Ordinal);
+        foreach (var (name, type, settings) in GraphInstances.Read(document.RootElement, catalog))
         {
-            if (item.ValueKind != JsonValueKind.Object
-                || !item.TryGetProperty("name", out var name) || name.ValueKind != JsonValueKind.String
-                || !item.TryGetProperty("type", out var type) || type.ValueKind != JsonValueKind.String
-                || catalog.Find(type.GetString()!) is not { } info || examples.ContainsKey(info.Name))
-            {
-                continue;
-            }
-
-            var errors = new List<JsonProblem>();
-            var settings = info.Settings?.Read(item.TryGetProperty("settings", out var s) ? s : default, errors);
-            if (errors.Count == 0)
-            {
-                examples[info.Name] = new PluginExample(settings, name.GetString()!, Path.GetFileName(graphPath), folder);
-            }
+            examples.TryAdd(type.Name, new PluginExample(settings, name, Path.GetFileName(graphPath), folder));
         }
 
         return examples;

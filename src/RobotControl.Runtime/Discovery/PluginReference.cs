@@ -96,10 +96,8 @@ public static class PluginReference
     private static string Default(SettingDescription s) => s.Default switch
     {
         null => s.Required ? "(required)" : string.Empty,
-        bool b => b ? "true" : "false",
         string t => t.Length == 0 ? "\"\"" : Code(t),
-        IFormattable f => f.ToString(null, CultureInfo.InvariantCulture),
-        var o => o.ToString() ?? string.Empty,
+        _ => s.FormatDefault() ?? string.Empty,
     };
 
     private static string Number(double value) => value.ToString("R", CultureInfo.InvariantCulture);

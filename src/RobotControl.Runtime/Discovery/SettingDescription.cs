@@ -43,6 +43,15 @@ public sealed record SettingDescription(
             setting.Description);
     }
 
+    /// <summary>The default as text (numbers in the invariant culture, booleans as <c>true</c>/<c>false</c>), or null when there is none.</summary>
+    public string? FormatDefault() => Default switch
+    {
+        null => null,
+        bool b => b ? "true" : "false",
+        IFormattable f => f.ToString(null, System.Globalization.CultureInfo.InvariantCulture),
+        var o => o.ToString(),
+    };
+
     private static string ChoiceName(Enum value, SettingDescriptor setting)
     {
         var index = Array.IndexOf(Enum.GetValues(value.GetType()), value);

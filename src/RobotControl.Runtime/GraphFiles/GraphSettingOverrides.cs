@@ -75,7 +75,7 @@ public static class GraphSettingOverrides
     private static JsonValue Value(SettingOverride item, JsonObject instance, PluginCatalog catalog)
     {
         var type = instance["type"] is JsonValue t && t.TryGetValue<string>(out var name) ? catalog.Find(name) : null;
-        var kind = type?.Settings?.Settings.FirstOrDefault(s => s.JsonName == item.Setting)?.Kind;
+        var kind = type?.Settings?.Find(item.Setting)?.Kind;
         var text = item.Value.Trim();
         return kind switch
         {

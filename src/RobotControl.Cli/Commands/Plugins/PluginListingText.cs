@@ -24,7 +24,7 @@ internal static class PluginListingText
                 Section(output, "outputs", p.Ports.Outputs.Select(o => new[] { o.Name, Units(o.Units), o.Description, $"(safe: {o.SafeValue})" }));
             }
 
-            Section(output, "settings", p.Settings.Select(s => new[] { s.Name, s.Kind, Units(s.Units), Range(s), $"default {Default(s.Default)}", s.Description }));
+            Section(output, "settings", p.Settings.Select(s => new[] { s.Name, s.Kind, Units(s.Units), Range(s), $"default {s.FormatDefault() ?? "-"}", s.Description }));
         }
     }
 
@@ -46,14 +46,6 @@ internal static class PluginListingText
             output.WriteLine($"  {(i == 0 ? title : ""),-9} {string.Join("  ", cells).TrimEnd()}");
         }
     }
-
-    private static string Default(object? value) => value switch
-    {
-        null => "-",
-        bool b => b ? "true" : "false",
-        IFormattable f => f.ToString(null, CultureInfo.InvariantCulture),
-        var o => o.ToString() ?? "-",
-    };
 
     private static string Units(string units) => units.Length == 0 ? "" : $"[{units}]";
 
