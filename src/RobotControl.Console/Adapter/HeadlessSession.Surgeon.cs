@@ -48,7 +48,7 @@ public sealed partial class HeadlessSession
                 : $"{hand.Scaling.Name}.ratio is wired in the graph: the console does not set it"));
         }
 
-        if (!double.IsFinite(ratio) || ratio < hand.ScaleMin || ratio > hand.ScaleMax)
+        if (hand.ScaleSetting is not { } range || !range.Accepts(ratio))
         {
             return Bad($"scale factor {ratio} outside {hand.ScaleMin:G4}..{hand.ScaleMax:G4} (the ratio setting's range of {hand.Scaling.Name})");
         }

@@ -46,15 +46,13 @@ internal sealed class SurgeonHands
 
             var scaling = Of(ScalingType) is { } s ? plugins.GetValueOrDefault(s) : null;
             var clutch = Of(ClutchType) is { } c ? plugins.GetValueOrDefault(c) : null;
-            var range = scaling is null ? null : Range(scaling, RatioInput);
             _hands.Add(new Hand(
                 arm.Name,
                 clutch,
                 Of(LockType),
                 scaling,
                 scaling?.IndexOfInput(RatioInput) ?? -1,
-                range?.Min ?? 0,
-                range?.Max ?? 0,
+                scaling is null ? null : Setting(scaling, RatioInput),
                 scaling is not null && document.Wires.All(w => w.To != $"{scaling.Name}.{RatioInput}"),
                 walls,
                 walls is null ? 0 : Number(plugins[walls], "max_force_n"),
@@ -121,10 +119,6 @@ internal sealed class SurgeonHands
         return targets.Count == 0 ? "nothing" : string.Join(", ", targets);
     }
 
-    /// <summary>The range of the setting named like <paramref name="input"/> of a plug-in (the input's accepted values).</summary>
-    private static (double Min, double Max)? Range(Plugin plugin, string input) =>
-        Setting(plugin, input) is { } d ? (d.Minimum, d.Maximum) : null;
-
     private static double Number(Plugin plugin, string setting) =>
         Setting(plugin, setting) is { } d
             ? Convert.ToDouble(d.Property.GetValue(plugin.SettingsObject), System.Globalization.CultureInfo.InvariantCulture)
@@ -140,13 +134,18 @@ internal sealed class SurgeonHands
         string? Lock,
         Plugin? Scaling,
         int RatioIndex,
-        double ScaleMin,
-        double ScaleMax,
+        SettingDescriptor? ScaleSetting,
         bool ScaleSettable,
         string? Walls,
         double WallMaxForceN,
         string? Ik)
     {
+        /// <summary>Smallest ratio the scaling's input takes (its ratio setting's range; 0 without one).</summary>
+        public double ScaleMin => ScaleSetting?.Minimum ?? 0;
+
+        /// <summary>Largest ratio the scaling's input takes.</summary>
+        public double ScaleMax => ScaleSetting?.Maximum ?? 0;
+
         /// <summary>The ratio in the scaling plug-in's input now.</summary>
         public double? Scale => Scaling is null || RatioIndex < 0 ? null : Scaling.GetInput(RatioIndex);
 
