@@ -40,6 +40,7 @@ public sealed partial class HeadlessSession : IConsoleSession
     private readonly TickStatistics _pollTiming = new();
     private readonly TickStatistics _commandTiming = new();
     private readonly CancellationTokenSource _stop = new();
+    private readonly Lock _closeLock = new();
     private readonly Thread _thread;
     private readonly long _begin;
     private volatile SessionStatus _statusView;
@@ -50,6 +51,7 @@ public sealed partial class HeadlessSession : IConsoleSession
     private long _tickAllocatedBytes;
     private int _pollNext;
     private int _found;
+    private SessionEnd? _end;
 
     /// <summary>
     /// Brings the session up through the session layer (graph, robot, discovery, safety supervisor homing to
@@ -129,24 +131,30 @@ public sealed partial class HeadlessSession : IConsoleSession
     public IReadOnlyList<EventEntry> EventsAfter(long after) => _events.After(after);
 
     /// <inheritdoc />
+    public SessionEnd Close()
+    {
+        lock (_closeLock)
+        {
+            if (_end is not null)
+            {
+                return _end;
+            }
+
+            _stop.Cancel();
+            _thread.Join();
+            _commands.Close();
+            var last = BuildStatus();
+            var stop = _session.Stop(); // loop off, motors off through the robot's state machine (or written off directly), every module read back
+            _events.Add(Now, "session", $"stopped: {stop.Summary}");
+            _end = new SessionEnd(last with { Session = "stopped", TorqueOn = stop.TorqueOn.Count > 0 }, stop, _events.After(0), Timings);
+            return _end;
+        }
+    }
+
+    /// <inheritdoc />
     public void Dispose()
     {
-        _stop.Cancel();
-        _thread.Join();
-        _commands.Close();
-        _session.Loop.Stop();
-        try
-        {
-            if (_bus.State is Robot.States.RobotState.Enabled or Robot.States.RobotState.Fault)
-            {
-                _bus.EnableTorque(false);
-            }
-        }
-        catch (IOException)
-        {
-            // The bus is gone; nothing more to switch off.
-        }
-
+        _ = Close();
         _session.Dispose();
         _stop.Dispose();
     }

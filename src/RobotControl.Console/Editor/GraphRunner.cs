@@ -107,6 +107,7 @@ public sealed class GraphRunner : IDisposable
         await current.TorqueAsync(false).ConfigureAwait(false);
         var stopped = new StoppedSession(current);
         _session.Replace(stopped);
-        await Task.Run(current.Dispose).ConfigureAwait(false);
+        stopped.Ended(await Task.Run(current.Close).ConfigureAwait(false));
+        current.Dispose();
     }
 }

@@ -9,7 +9,8 @@ namespace RobotControl.WebConsole.Editor;
 internal sealed class StoppedSession : IConsoleSession
 {
     private const string Refusal = "no graph runs: start one from the graph editor";
-    private readonly IReadOnlyList<EventEntry> _events;
+    private volatile IReadOnlyList<EventEntry> _events;
+    private volatile SessionEnd? _end;
 
     /// <summary>What is left of <paramref name="last"/>: its status (stopped), robot model, workspace, events and faults.</summary>
     public StoppedSession(IConsoleSession last)
@@ -39,6 +40,17 @@ internal sealed class StoppedSession : IConsoleSession
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
 
     public IReadOnlyList<EventEntry> EventsAfter(long after) => [.. _events.Where(e => e.Sequence > after)];
+
+    /// <summary>How the last session ended, once it has closed: its events then include the stop's read-back.</summary>
+    public void Ended(SessionEnd end)
+    {
+        ArgumentNullException.ThrowIfNull(end);
+        _events = end.Events;
+        _end = end;
+    }
+
+    /// <summary>How the last session ended (before it has finished closing: its last status, without a read-back).</summary>
+    public SessionEnd Close() => _end ?? new SessionEnd(Status, null, _events, []);
 
     public Task<CommandResult> DiscoverAsync() => Refused();
 

@@ -94,5 +94,8 @@ public sealed class SwitchableSession : IConsoleSession
     public Task<CommandResult> ClearFaultsAsync() => _current.ClearFaultsAsync();
 
     /// <inheritdoc />
+    public SessionEnd Close() => _current.Close();
+
+    /// <inheritdoc />
     public void Dispose() => _current.Dispose();
 }

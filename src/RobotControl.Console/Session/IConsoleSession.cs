@@ -78,4 +78,10 @@ public interface IConsoleSession : IDisposable
 
     /// <summary>Sets the scale factor (motion ratio) of an arm's hand; refused unless that hand's clutch is held.</summary>
     Task<CommandResult> SetScaleAsync(string arm, double ratio);
+
+    /// <summary>
+    /// Ends the session: the loop stops, the motors go off and every module is read back. Once closed, it stays closed
+    /// and returns the same end; <see cref="IDisposable.Dispose"/> closes it too.
+    /// </summary>
+    SessionEnd Close();
 }

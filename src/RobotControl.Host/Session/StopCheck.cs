@@ -20,6 +20,11 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
     /// <summary>True when every module answered and reports torque off on every channel.</summary>
     public bool TorqueOff => TorqueOn.Count == 0 && Unreachable.Count == 0;
 
+    /// <summary>The read-back in words: <c>torque off on all 6 modules (read back)</c>, or where torque is not confirmed off.</summary>
+    public string Summary => TorqueOff
+        ? $"torque off on all {Modules} modules (read back)"
+        : $"torque NOT confirmed off: on at [{string.Join(", ", TorqueOn)}], no answer from [{string.Join(", ", Unreachable)}]";
+
     /// <summary>
     /// Switches the motors off (through the robot's state machine; if a module refuses, by writing torque and watchdog
     /// off to every configured module directly) and reads every module back.

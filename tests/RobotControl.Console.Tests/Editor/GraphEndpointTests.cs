@@ -129,6 +129,10 @@ public sealed class GraphEndpointTests(EditorFixture console)
         Assert.False(run.Running);
         Assert.Equal("stopped", console.Session.Status.Session);
         Assert.False(console.Session.Status.TorqueOn);
+        Assert.Equal("stopped: torque off on all 6 modules (read back)", console.Session.EventsAfter(0)[^1].Message); // the stop's read-back, for the pages
+        var end = console.Session.Close(); // the stopped graph's end, as robotctl console reports it
+        Assert.True(end.TorqueOff);
+        Assert.Equal(6, end.Stop!.Modules);
         using var http = console.Client("stopped");
         Assert.Empty(await http.GetFromJsonAsync<JsonElement[]>("api/controllers") ?? []);
     }

@@ -1,5 +1,6 @@
 using System.Globalization;
 using RobotControl.Host.Harness;
+using RobotControl.Host.Session;
 
 namespace RobotControl.Cli.Commands.Run;
 
@@ -43,14 +44,18 @@ internal static class RunEnd
 
         if (result.Stop is { } stop)
         {
-            var line = stop.TorqueOff
-                ? $"  stop: torque off on all {stop.Modules} modules (read back)"
-                : $"  stop: torque NOT confirmed off: on at [{string.Join(", ", stop.TorqueOn)}], no answer from [{string.Join(", ", stop.Unreachable)}]";
-            (stop.TorqueOff ? output : error).WriteLine(line);
-            foreach (var latched in stop.LatchedErrors)
-            {
-                error.WriteLine($"  latched in module {latched}");
-            }
+            TellStop(stop, output, error);
+        }
+    }
+
+    /// <summary>Prints what the modules said after the stop: torque off on all, or where it is not confirmed (to <paramref name="error"/>), and latched errors.</summary>
+    public static void TellStop(StopCheck stop, TextWriter output, TextWriter error)
+    {
+        ArgumentNullException.ThrowIfNull(stop);
+        (stop.TorqueOff ? output : error).WriteLine($"  stop: {stop.Summary}");
+        foreach (var latched in stop.LatchedErrors)
+        {
+            error.WriteLine($"  latched in module {latched}");
         }
     }
 }

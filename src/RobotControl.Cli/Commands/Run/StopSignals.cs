@@ -11,12 +11,17 @@ internal sealed class StopSignals : IDisposable
     private readonly CancellationTokenSource _stop = new();
     private readonly PosixSignalRegistration[] _registrations;
     private readonly TextWriter _error;
+    private readonly string _stopping;
     private int _received;
 
-    /// <summary>Takes over SIGINT and SIGTERM until disposed; messages go to <paramref name="error"/>.</summary>
-    public StopSignals(TextWriter error)
+    /// <summary>
+    /// Takes over SIGINT and SIGTERM until disposed; messages go to <paramref name="error"/>, the first signal's says
+    /// <paramref name="stopping"/> (what the stop does).
+    /// </summary>
+    public StopSignals(TextWriter error, string stopping = "loop off, motors off, report marked interrupted")
     {
         _error = error;
+        _stopping = stopping;
         _registrations = [PosixSignalRegistration.Create(PosixSignal.SIGINT, Handle), PosixSignalRegistration.Create(PosixSignal.SIGTERM, Handle)];
     }
 
@@ -39,7 +44,7 @@ internal sealed class StopSignals : IDisposable
         if (Interlocked.Increment(ref _received) == 1)
         {
             context.Cancel = true; // handled here: stop cleanly
-            _error.WriteLine($"{context.Signal}: stopping: loop off, motors off, report marked interrupted (signal again to force the exit)");
+            _error.WriteLine($"{context.Signal}: stopping: {_stopping} (signal again to force the exit)");
             _stop.Cancel();
         }
         else

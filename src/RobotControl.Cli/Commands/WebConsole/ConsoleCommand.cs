@@ -1,19 +1,24 @@
 using System.CommandLine;
 using System.Diagnostics;
+using System.Globalization;
 using RobotControl.Cli.Commands.Run;
 using RobotControl.Cli.Options;
+using RobotControl.Cli.Output;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Session;
 using RobotControl.Runtime.Graph;
 using RobotControl.WebConsole.Adapter;
 using RobotControl.WebConsole.Editor;
 using RobotControl.WebConsole.Server;
+using RobotControl.WebConsole.Session;
 
 namespace RobotControl.Cli.Commands.WebConsole;
 
 /// <summary>
-/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open [--page surgeon] [--kiosk]] [--inject silent=...]</c>:
-/// starts the session and serves the web console (pages and JSON/WebSocket API) from this process until Ctrl+C.
+/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open [--page surgeon] [--kiosk]] [--inject silent=...] [--report session.json]</c>:
+/// starts the session and serves the web console (pages and JSON/WebSocket API) from this process until Ctrl+C or
+/// SIGTERM. The stop switches the motors off, reads every module back, prints what they said and writes the session's
+/// report (<c>--report</c>); the exit code is 0 when every module answered with torque off, 1 otherwise.
 /// </summary>
 internal sealed class ConsoleCommand : ICliCommand
 {
@@ -31,9 +36,10 @@ internal sealed class ConsoleCommand : ICliCommand
         var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: silent=<module>@<time>, e.g. silent=left.forearm@30s (see docs/safety.md)" };
         var page = new Option<string?>("--page") { Description = "The page --open shows: bus, plots, view3d, status, editor or surgeon" };
         var kiosk = new Option<bool>("--kiosk") { Description = "With --open: full screen, no browser controls (Chromium's --kiosk)" };
+        var report = CliOption.OutputFile("--report", "At the stop, write the session's report (JSON: last status, the stop's read-back, events, timings) to this file (checked before the session starts)");
         var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status, graph editor and the surgeon's view of a running session.");
         command.Arguments.Add(graph);
-        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed, inject, page, kiosk })
+        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed, inject, page, kiosk, report })
         {
             command.Options.Add(o);
         }
@@ -47,7 +53,7 @@ internal sealed class ConsoleCommand : ICliCommand
             parse.GetValue(open),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
-            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk)),
+            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk), parse.GetValue(report)?.FullName),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -100,6 +106,7 @@ internal sealed class ConsoleCommand : ICliCommand
         var switchable = new SwitchableSession(session);
         using var runner = new GraphRunner(switchable, graphPath, session.Transport, path => new HeadlessSession(options with { GraphPath = path }));
         var editor = new GraphEditor(new GraphFolder(Path.GetDirectoryName(graphPath)!), options.Catalog, runner);
+        SessionEnd end;
         using (switchable)
         {
             ConsoleServer server;
@@ -127,25 +134,33 @@ internal sealed class ConsoleCommand : ICliCommand
             }
 
             output.WriteLine("console: Ctrl+C stops");
-            using var stopped = new ManualResetEventSlim();
-            ConsoleCancelEventHandler cancel = (_, e) =>
+            using (var signals = new StopSignals(error, "pages closed, loop off, motors off, modules read back"))
             {
-                e.Cancel = true;
-                stopped.Set();
-            };
-            System.Console.CancelKeyPress += cancel;
-            try
-            {
-                stopped.Wait();
-            }
-            finally
-            {
-                System.Console.CancelKeyPress -= cancel;
-                server.DisposeAsync().AsTask().GetAwaiter().GetResult();
+                signals.Token.WaitHandle.WaitOne();
+                server.DisposeAsync().AsTask().GetAwaiter().GetResult(); // no more commands from the pages
+                end = switchable.Close();
             }
         }
 
-        return 0;
+        return Ended(end, extras.Report, output, error);
+    }
+
+    /// <summary>Says how the session ended and writes its report; 0 when every module answered with torque off.</summary>
+    private static int Ended(SessionEnd end, string? reportPath, TextWriter output, TextWriter error)
+    {
+        output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"console: stopped after {end.Status.SessionSeconds:F1} s, {end.Status.Ticks} ticks, {end.Status.DeadlineMisses} deadline misses"));
+        if (end.Stop is { } stop)
+        {
+            RunEnd.TellStop(stop, output, error);
+        }
+
+        if (reportPath is not null)
+        {
+            AtomicFile.WriteAllText(reportPath, end.ToJson());
+            output.WriteLine($"report: {reportPath}");
+        }
+
+        return end.TorqueOff ? 0 : 1;
     }
 
     /// <summary>Starts a Chromium-family browser in app mode on <paramref name="url"/>; says what happened.</summary>

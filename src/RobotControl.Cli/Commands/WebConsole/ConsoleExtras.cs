@@ -1,10 +1,11 @@
 namespace RobotControl.Cli.Commands.WebConsole;
 
-/// <summary>The console command's options for the surgeon's station: injected faults, the page to open, kiosk mode.</summary>
+/// <summary>The console command's options for the surgeon's station: injected faults, the page to open, kiosk mode, the report.</summary>
 /// <param name="Inject">The <c>--inject</c> text, or null.</param>
 /// <param name="Page">The <c>--page</c> to open, or null (the bus page).</param>
 /// <param name="Kiosk">True: <c>--kiosk</c>.</param>
-internal sealed record ConsoleExtras(string? Inject, string? Page, bool Kiosk)
+/// <param name="Report">The <c>--report</c> file written at the stop, or null.</param>
+internal sealed record ConsoleExtras(string? Inject, string? Page, bool Kiosk, string? Report)
 {
     /// <summary>The console's pages (the front-end's routes).</summary>
     public static readonly IReadOnlyList<string> Pages = ["bus", "plots", "view3d", "status", "editor", "surgeon"];

@@ -1,6 +1,4 @@
 using System.Text.Json;
-using RobotControl.Bus.Client;
-using RobotControl.Bus.Protocol;
 
 namespace RobotControl.Cli.Tests.Commands.Run;
 
@@ -60,7 +58,7 @@ public sealed class RunInterruptTests
             }
         }
 
-        AssertModulesSafe(sim); // read back independently: torque off everywhere, nothing latched
+        sim.AssertTorqueOff(); // read back independently: torque off everywhere, nothing latched
         var next = Path.Combine(dir, "next.json");
         using (var run = new RunProcess("run", RunProcess.Graph, "--transport", transport, "--duration", "1s", "--report", next))
         {
@@ -84,24 +82,5 @@ public sealed class RunInterruptTests
         Assert.Equal(6, stop.GetProperty("modules").GetInt32());
         Assert.True(stop.GetProperty("torque_off").GetBoolean(), stop.ToString());
         Assert.Equal(0, stop.GetProperty("latched_errors").GetArrayLength());
-    }
-
-    /// <summary>Reads every module back over the pty, independently of robotctl: torque off, no error latched.</summary>
-    private static void AssertModulesSafe(SimulatorProcess sim)
-    {
-        var robot = SimulatorProcess.Robot;
-        var table = ControlTable.Firmware;
-        var torque = table["torque_enable"];
-        var status = table["hardware_error_status"];
-        using var client = sim.ReadBack();
-        var channels = new byte[((torque.Count - 1) * torque.Stride) + torque.Size];
-        var error = new byte[1];
-        foreach (var m in robot.Modules.Modules)
-        {
-            Assert.True(client.Read(m.Id, torque.At(0), channels).Succeeded, $"module {m.Id} did not answer");
-            Assert.All(channels, b => Assert.Equal(0, b));
-            Assert.True(client.Read(m.Id, status.At(0), error).Outcome == ReplyOutcome.Ok);
-            Assert.Equal(0, error[0]);
-        }
     }
 }

@@ -1,5 +1,6 @@
 using System.Text.RegularExpressions;
 using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports;
 using RobotControl.Hardware.Loading;
 using RobotControl.Hardware.Model;
@@ -32,6 +33,27 @@ internal sealed partial class SimulatorProcess : IDisposable
     /// <summary>A client of its own on the pty, with a margin a loaded machine allows.</summary>
     public BusClient ReadBack() =>
         new(LinkFactory.Open(Transport), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(50) });
+
+    /// <summary>
+    /// Reads every module back over the pty, independently of robotctl: each answers with torque off on every channel
+    /// (and, unless <paramref name="latchedAllowed"/>, with no hardware error latched).
+    /// </summary>
+    public void AssertTorqueOff(bool latchedAllowed = false)
+    {
+        var table = ControlTable.Firmware;
+        var torque = table["torque_enable"];
+        var status = table["hardware_error_status"];
+        using var client = ReadBack();
+        var channels = new byte[((torque.Count - 1) * torque.Stride) + torque.Size];
+        var error = new byte[1];
+        foreach (var m in Robot.Modules.Modules)
+        {
+            Assert.True(client.Read(m.Id, torque.At(0), channels).Succeeded, $"module {m.Id} did not answer");
+            Assert.All(channels, b => Assert.Equal(0, b));
+            Assert.True(client.Read(m.Id, status.At(0), error).Outcome == ReplyOutcome.Ok);
+            Assert.True(latchedAllowed || error[0] == 0, $"module {m.Id} latched error {error[0]}");
+        }
+    }
 
     public void Dispose() => _process.Dispose();
 
