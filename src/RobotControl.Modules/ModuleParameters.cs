@@ -29,6 +29,9 @@ public static class ModuleParameters
     /// <summary>The baud code for <paramref name="baud"/>, or -1.</summary>
     public static int BaudCode(int baud) => Array.IndexOf(BaudCodes, baud);
 
+    /// <summary>Every bit rate the modules can be set to, in code order.</summary>
+    public static IReadOnlyList<int> Bauds => [.. BaudCodes.Where(b => b > 0)];
+
     /// <summary>The bit rate of a baud code.</summary>
     public static int BaudFromCode(int code) => code >= 0 && code < BaudCodes.Length ? BaudCodes[code] : 0;
 

@@ -18,8 +18,20 @@ public sealed unsafe partial class VirtualRobot
         var start = System.Diagnostics.Stopwatch.GetTimestamp();
         var origin = _nowUs;
         var pty = port as PseudoTerminal;
+        var last = start;
+        var lastCpu = Environment.CpuUsage.TotalTime;
         while (!cancellationToken.IsCancellationRequested)
         {
+            var now = System.Diagnostics.Stopwatch.GetTimestamp();
+            var cpu = Environment.CpuUsage.TotalTime;
+            if (now - last > LongestServeGap.Ticks * System.Diagnostics.Stopwatch.Frequency / TimeSpan.TicksPerSecond)
+            {
+                LongestServeGap = System.Diagnostics.Stopwatch.GetElapsedTime(last, now);
+                LongestServeGapAt = System.Diagnostics.Stopwatch.GetElapsedTime(start, last);
+                LongestServeGapCpu = cpu - lastCpu;
+            }
+
+            (last, lastCpu) = (now, cpu);
             if (pty is not null)
             {
                 FollowLineBaud(pty.ClientBaud); // the host re-opened its port at a new baud (after a baud change)
@@ -73,4 +85,16 @@ public sealed unsafe partial class VirtualRobot
 
     /// <summary>Wall-clock time the real-time simulation (<see cref="Serve"/>) fell behind and skipped.</summary>
     public TimeSpan SlippedTime { get; private set; }
+
+    /// <summary>
+    /// The longest wall-clock time between two turns of <see cref="Serve"/>'s loop (a turn waits up to 200 us for bytes,
+    /// then simulates up to now): longer than about 1 ms, the simulator was not running (preempted, paused, stalled).
+    /// </summary>
+    public TimeSpan LongestServeGap { get; private set; }
+
+    /// <summary>When the <see cref="LongestServeGap"/> began, wall-clock time after serving started.</summary>
+    public TimeSpan LongestServeGapAt { get; private set; }
+
+    /// <summary>CPU time the process used during the <see cref="LongestServeGap"/>: about the gap, it was busy; about 0, it was not running.</summary>
+    public TimeSpan LongestServeGapCpu { get; private set; }
 }

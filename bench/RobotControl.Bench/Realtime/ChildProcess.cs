@@ -13,8 +13,9 @@ internal sealed class ChildProcess : IDisposable
     /// Starts <c>robotctl bus-sim <paramref name="robot"/> --pty</c> (the built CLI of this repository) in its own
     /// process and returns it with the transport it prints. With <paramref name="fifoPriority"/> &gt; 0 it runs under
     /// <c>chrt -f</c> at that SCHED_FIFO priority: the simulator stands for module hardware, which host load does not slow.
+    /// With <paramref name="baud"/> its modules are commissioned at that rate instead of the robot file's.
     /// </summary>
-    public static (ChildProcess Sim, string Transport) StartBusSim(string robot, int fifoPriority)
+    public static (ChildProcess Sim, string Transport) StartBusSim(string robot, int fifoPriority, int? baud)
     {
         var cli = Path.GetFullPath(Path.Combine("src", "RobotControl.Cli", "bin", "Release", "net10.0", "robotctl.dll"));
         if (!File.Exists(cli))
@@ -24,7 +25,8 @@ internal sealed class ChildProcess : IDisposable
 
         var start = new ProcessStartInfo(fifoPriority > 0 ? "chrt" : "dotnet") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
         string[] prefix = fifoPriority > 0 ? ["-f", fifoPriority.ToString(System.Globalization.CultureInfo.InvariantCulture), "dotnet"] : [];
-        foreach (var a in prefix.Concat([cli, "bus-sim", robot, "--pty"]))
+        string[] rate = baud is { } b ? ["--baud", b.ToString(System.Globalization.CultureInfo.InvariantCulture)] : [];
+        foreach (var a in prefix.Concat([cli, "bus-sim", robot, "--pty", .. rate]))
         {
             start.ArgumentList.Add(a);
         }
@@ -55,6 +57,30 @@ internal sealed class ChildProcess : IDisposable
             problem = ex.NativeErrorCode == 2 ? "stress-ng is not installed (apt-get install stress-ng)" : $"stress-ng did not start (error {ex.NativeErrorCode})";
             return null;
         }
+    }
+
+    /// <summary>
+    /// Asks the process to end (SIGTERM: <c>bus-sim</c> stops serving and prints how it went) and returns the last line
+    /// it printed, or null when it had to be killed.
+    /// </summary>
+    public string? Stop(TimeSpan patience)
+    {
+        if (_process.HasExited)
+        {
+            return null;
+        }
+
+        using (var kill = Process.Start("kill", ["-TERM", _process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+        {
+            kill.WaitForExit();
+        }
+
+        if (!_process.WaitForExit(patience))
+        {
+            return null;
+        }
+
+        return _process.StandardOutput.ReadToEnd().Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries).LastOrDefault();
     }
 
     public void Dispose()

@@ -11,7 +11,7 @@ namespace RobotControl.Bench.Realtime;
 
 /// <summary>
 /// <c>realtime [--graph graphs/teleop-lb.json] [--robot hardware/robots/lb-1.0.json] [--seconds 600]
-/// [--scenarios idle,idle-sll,busy] [--rt-priority 0] [--sim-rt-priority 0] [--cpu N] [--floor-seconds 10] [--out file.json]</c>: the shipped teleop graph on the
+/// [--scenarios idle,idle-sll,busy] [--rt-priority 0] [--sim-rt-priority 0] [--cpu N] [--floor-seconds 10] [--floor-during no] [--cpu-latency hold] [--baud 3000000] [--out file.json]</c>: the shipped teleop graph on the
 /// wall clock, the 1 kHz loop and the bus on their own threads, the virtual robot (real firmware) in another process
 /// behind a pty (<c>robotctl bus-sim --pty</c>, a fresh one per scenario). Per scenario: deadline misses, tick start
 /// jitter p50/p99/p99.9/max, bus cycle period distribution, late replies, CRC errors, timeouts, retries, safety trips,
@@ -29,8 +29,17 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
 
     public string Description => "Teleop graph on the wall clock against the virtual robot in another process behind a pty: misses, jitter, bus periods, late replies.";
 
+    private static readonly string[] Options = ["--graph", "--robot", "--seconds", "--scenarios", "--rt-priority", "--sim-rt-priority", "--cpu", "--floor-seconds", "--floor-during", "--cpu-latency", "--baud", "--out"];
+
     public int Run(string[] args)
     {
+        var unknown = args.Where((a, i) => i % 2 == 0).FirstOrDefault(a => !Options.Contains(a));
+        if (unknown is not null || args.Length % 2 != 0)
+        {
+            Console.Error.WriteLine($"realtime: {(unknown is null ? $"{args[^1]} needs a value" : $"unknown option '{unknown}'")}; options: {string.Join(' ', Options)} (each with a value)");
+            return 2;
+        }
+
         var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
         var robot = Arg(args, "--robot") ?? "hardware/robots/lb-1.0.json";
         var seconds = double.Parse(Arg(args, "--seconds") ?? "600", CultureInfo.InvariantCulture);
@@ -39,27 +48,51 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         var simPriority = int.Parse(Arg(args, "--sim-rt-priority") ?? "0", CultureInfo.InvariantCulture);
         int? cpu = Arg(args, "--cpu") is { } c ? int.Parse(c, CultureInfo.InvariantCulture) : null;
         var outFile = Arg(args, "--out");
+        int? baud = Arg(args, "--baud") is { } b ? int.Parse(b, CultureInfo.InvariantCulture) : null;
+        var floorDuring = (Arg(args, "--floor-during") ?? "no") is "yes";
+        var holdLatency = (Arg(args, "--cpu-latency") ?? "hold") is "hold";
         var floorTime = TimeSpan.FromSeconds(double.Parse(Arg(args, "--floor-seconds") ?? "10", CultureInfo.InvariantCulture));
         if (!double.IsFinite(seconds) || seconds is < 1 or > 86_400 || scenarios.Any(s => s is not ("idle" or "idle-sll" or "busy"))
-            || floorTime < TimeSpan.Zero || floorTime > TimeSpan.FromHours(1))
+            || floorTime < TimeSpan.Zero || floorTime > TimeSpan.FromHours(1) || (Arg(args, "--floor-during") ?? "no") is not ("yes" or "no") || (Arg(args, "--cpu-latency") ?? "hold") is not ("hold" or "free"))
         {
-            Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy, --floor-seconds 0..3600");
+            Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy, --floor-seconds 0..3600, --floor-during yes|no, --cpu-latency hold|free");
             return 2;
         }
 
+        // Ctrl+C ends the scenario that runs (its simulator and load processes killed) and writes what was measured.
+        using var interrupt = new CancellationTokenSource();
+        ConsoleCancelEventHandler cancel = (_, e) =>
+        {
+            e.Cancel = true;
+            Console.Error.WriteLine("realtime: interrupted: ending the scenario, stopping the simulator");
+            interrupt.Cancel();
+        };
+        Console.CancelKeyPress += cancel;
+        try
+        {
+            return Run(graph, robot, seconds, scenarios, new RealtimeThreads(priority, cpu) { HoldCpuLatency = holdLatency }, new SimSettings(simPriority, baud), new FloorSettings(floorTime, floorDuring), outFile, interrupt.Token);
+        }
+        finally
+        {
+            Console.CancelKeyPress -= cancel;
+        }
+    }
+
+    private static int Run(string graph, string robot, double seconds, string[] scenarios, RealtimeThreads threads, SimSettings sim, FloorSettings floor, string? outFile, CancellationToken interrupt)
+    {
         var duration = TimeSpan.FromSeconds(seconds);
         var catalog = HostPlugins.Catalog();
         Console.WriteLine($"virtual-clock reference: {graph}, {seconds} s");
-        var reference = HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration }, catalog);
+        var reference = HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration, Stop = interrupt }, catalog);
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  tracking rms {reference.TrackingRmsMm:F3} mm, max {reference.TrackingMaxMm:F3} mm, {reference.DeadlineMisses} misses"));
         var results = new List<ScenarioResult>();
         var failures = new List<string>();
-        foreach (var name in scenarios)
+        foreach (var name in scenarios.TakeWhile(_ => !interrupt.IsCancellationRequested))
         {
             Console.WriteLine($"scenario {name}: {seconds} s on the wall clock (load average {LoadAverage()})");
             try
             {
-                var result = RunScenario(name, graph, robot, duration, new RealtimeThreads(priority, cpu), simPriority, floorTime, reference);
+                var result = RunScenario(name, graph, robot, duration, threads, sim, floor, reference, interrupt);
                 results.Add(result);
                 Console.WriteLine(result.Line());
             }
@@ -77,28 +110,33 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                 graph,
                 robot,
                 seconds,
+                transportBaud = sim.Baud,
                 processors = Environment.ProcessorCount,
                 serverGc = GCSettings.IsServerGC,
                 @virtual = new { trackingRmsMm = reference.TrackingRmsMm, trackingMaxMm = reference.TrackingMaxMm, deadlineMisses = reference.DeadlineMisses },
+                interrupted = interrupt.IsCancellationRequested,
                 scenarios = results,
                 failures,
             }, JsonOptions));
             Console.WriteLine($"wrote {outFile}");
         }
 
-        return failures.Count == 0 ? 0 : 1;
+        return interrupt.IsCancellationRequested ? 130 : failures.Count == 0 ? 0 : 1;
     }
 
-    private static ScenarioResult RunScenario(string name, string graph, string robot, TimeSpan duration, RealtimeThreads threads, int simPriority, TimeSpan floorTime, RunReport reference)
+    private static ScenarioResult RunScenario(string name, string graph, string robot, TimeSpan duration, RealtimeThreads threads, SimSettings simSettings, FloorSettings floorSettings, RunReport reference, CancellationToken interrupt)
     {
-        var (sim, transport) = ChildProcess.StartBusSim(robot, simPriority);
+        var (sim, transport) = ChildProcess.StartBusSim(robot, simSettings.FifoPriority, simSettings.Baud);
         using (sim)
         {
             string? loadProblem = null;
             using var load = name == "busy" ? ChildProcess.StartCpuLoad(duration + TimeSpan.FromSeconds(10), out loadProblem) : null;
             var gc = name == "idle" ? GCLatencyMode.Interactive : GCLatencyMode.SustainedLowLatency; // set by the run, restored after it
             // The machine's own floor, in the same conditions (simulator idle, load running), just before the run.
-            var floor = floorTime > TimeSpan.Zero ? PlatformFloor.Measure(floorTime, threads.Priority) : null;
+            var floor = floorSettings.Before > TimeSpan.Zero ? PlatformFloor.Measure(floorSettings.Before, threads.Priority) : null;
+            // And, asked for, alongside the run: the same thread waking every 1 ms while the loop and the bus run.
+            // It runs 3 s past the run, so that reading its histogram is not counted as the run's allocation.
+            var floorDuring = floorSettings.During ? Task.Run(() => PlatformFloor.Measure(duration + TimeSpan.FromSeconds(3), threads.Priority)) : null;
             var stealStart = PlatformFloor.StealTicks();
             var loadStart = LoadAverage();
             CycleTimesLink? cycles = null;
@@ -106,8 +144,10 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
             var gen2 = GC.CollectionCount(2);
             long allocStart = 0, allocStartAt = 0, allocEnd = 0, allocEndAt = 0;
             double lagP50 = 0, lagP99 = 0, lagP999 = 0, lagMax = 0;
+            var tickTime = new Quantiles(0, 0, 0, 0);
+            var pauseStart = GC.GetTotalPauseDuration();
             var report = HeadlessRun.RunRealTime(
-                new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads, RealtimeGcLatency = gc },
+                new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads, RealtimeGcLatency = gc, Stop = interrupt },
                 HostPlugins.Catalog(),
                 new VirtualRunHooks
                 {
@@ -117,9 +157,11 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                         (allocEnd, allocEndAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp());
                         var s = session.Loop.Statistics;
                         (lagP50, lagP99, lagP999, lagMax) = (s.StartLagPercentile(0.5), s.StartLagPercentile(0.99), s.StartLagPercentile(0.999), s.StartLagMaxUs);
+                        tickTime = new Quantiles(s.Percentile(0.5), s.Percentile(0.99), s.Percentile(0.999), s.MaxUs);
                     },
                 });
             var stealMs = (PlatformFloor.StealTicks() - stealStart) * CpuTimes.MillisecondsPerTick;
+            var simEnd = sim.Stop(TimeSpan.FromSeconds(10)) ?? "the simulator did not stop on SIGTERM: killed";
             var periods = Periods(cycles!.Starts);
             var allocSeconds = (allocEndAt - allocStartAt) / (double)Stopwatch.Frequency;
             var bytesPerSecond = allocStart > 0 && allocSeconds > 0 ? (allocEnd - allocStart) / allocSeconds : double.NaN;
@@ -135,7 +177,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                 report.DeadlineMisses,
                 report.Ticks == 0 ? 0 : report.DeadlineMisses / (double)report.Ticks,
                 new Quantiles(lagP50, lagP99, lagP999, lagMax),
-                new Quantiles(report.TickMedianUs, report.TickP99Us, report.TickP99Us, report.TickMaxUs),
+                tickTime,
                 periods.Length == 0 ? new Quantiles(0, 0, 0, 0) : new Quantiles(Quantile(periods, 0.5), Quantile(periods, 0.99), Quantile(periods, 0.999), periods[^1]),
                 periods.Length == 0 ? 0 : periods.Length / (periods.Sum() * 1e-6),
                 report.Bus.LateReplies,
@@ -151,12 +193,27 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                 bytesPerSecond / (periods.Length == 0 ? double.NaN : periods.Length / (periods.Sum() * 1e-6)),
                 GC.CollectionCount(0) - gen0,
                 GC.CollectionCount(2) - gen2,
+                (GC.GetTotalPauseDuration() - pauseStart).TotalMilliseconds,
+                MaxPauseMs(),
                 report.Stop?.TorqueOff ?? false,
                 report.Stop is not { } stop ? ["no stop check"] : [.. stop.TorqueOn.Select(m => $"torque on: {m}"), .. stop.Unreachable.Select(m => $"no answer: {m}")],
                 floor,
-                stealMs);
+                floorDuring?.GetAwaiter().GetResult(),
+                stealMs,
+                simEnd,
+                StartupGap.Longest(cycles.Starts, cycles.Trace, 3));
         }
     }
+
+    /// <summary>The longest pause of the last collection of each kind (ephemeral, full blocking, background), milliseconds.</summary>
+    private static double MaxPauseMs() =>
+        new[] { GCKind.Ephemeral, GCKind.FullBlocking, GCKind.Background }
+            .Select(GC.GetGCMemoryInfo)
+            .Where(i => i.Index > 0)
+            .SelectMany(i => i.PauseDurations.ToArray())
+            .Select(p => p.TotalMilliseconds)
+            .DefaultIfEmpty(0)
+            .Max();
 
     /// <summary>Sorted cycle periods in microseconds, from consecutive cycle starts.</summary>
     private static double[] Periods(ReadOnlySpan<long> starts)
@@ -190,4 +247,10 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         var i = Array.IndexOf(args, name);
         return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
     }
+
+    /// <summary>How the simulator process runs: its SCHED_FIFO priority (0: none) and the baud its modules are commissioned at (null: the robot file's).</summary>
+    private sealed record SimSettings(int FifoPriority, int? Baud);
+
+    /// <summary>The machine's floor (cyclictest): how long before each scenario (0: not measured), and whether alongside the run too.</summary>
+    private sealed record FloorSettings(TimeSpan Before, bool During);
 }

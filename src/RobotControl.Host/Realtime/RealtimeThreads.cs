@@ -41,6 +41,9 @@ public sealed class RealtimeThreads
     /// <summary>The CPU the threads are pinned to (null: any).</summary>
     public int? Cpu { get; }
 
+    /// <summary>Hold the CPUs' wake-up latency at 0 us while the threads run (<see cref="CpuLatencyHold"/>); true unless a benchmark compares.</summary>
+    public bool HoldCpuLatency { get; init; } = true;
+
     /// <summary>What the threads got, in one line (complete once <see cref="Start"/> returns).</summary>
     public string Outcome { get; private set; } = "not started";
 

@@ -26,6 +26,7 @@ public sealed class RobotSession : IDisposable
 
     private bool _running;
     private StopCheck? _stopped;
+    private CpuLatencyHold? _cpuLatency;
 
     private RobotSession(LoadedGraph graph, RobotConnection connection, ManualTimeProvider? loopClock, DiscoveryReport discovery, ControlLoop loop, SafetySupervisor supervisor)
     {
@@ -189,8 +190,13 @@ public sealed class RobotSession : IDisposable
         _ = StopCheck.TorqueOffAndVerify(Robot); // the stop's path too: compiled now, it cannot stall a stop past the watchdog
         Supervisor.Home("session"); // INIT -> HOMING -> PEDAL_UP: motors on, watchdogs armed
         _running = true;
-        (threads ?? RealtimeThreads.Default).Start(Robot.Start, Loop.Start); // each thread schedules itself (.NET threads do not inherit it)
+        var scheduling = threads ?? RealtimeThreads.Default;
+        _cpuLatency = scheduling.HoldCpuLatency ? CpuLatencyHold.Request() : null; // until the stop: idle CPUs wake at once
+        scheduling.Start(Robot.Start, Loop.Start); // each thread schedules itself (.NET threads do not inherit it)
     }
+
+    /// <summary>Whether the CPUs' wake-up latency is held for the run (<see cref="CpuLatencyHold"/>), in one line; null before <see cref="StartRealtime"/> or when not asked for.</summary>
+    public string? CpuLatency => _cpuLatency?.Outcome;
 
     /// <summary>
     /// Stops the loop and the bus thread (if running), switches the motors off on every module and reads them back;
@@ -203,6 +209,7 @@ public sealed class RobotSession : IDisposable
             _running = false;
             Loop.Stop();
             Robot.Stop();
+            _cpuLatency?.Dispose();
         }
 
         return _stopped ??= StopCheck.TorqueOffAndVerify(Robot);
