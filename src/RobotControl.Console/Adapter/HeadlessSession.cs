@@ -224,6 +224,8 @@ public sealed partial class HeadlessSession : IConsoleSession
     private void RunRealTime()
     {
         // The loop runs on its own thread; this thread owns the bus, so the console's commands run between cycles.
+        using var latency = Host.Realtime.CpuLatencyHold.Request(); // idle CPUs wake at once, as in a real-time run
+        _events.Add(Now, "session", latency.Outcome);
         var loop = _session.Loop;
         loop.Start();
         var nextPublish = 0.0;

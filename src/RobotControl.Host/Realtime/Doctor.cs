@@ -48,6 +48,7 @@ public static class Doctor
 
         findings.Add(Priority());
         findings.Add(Governor(sysRoot));
+        findings.Add(WakeLatencyHold(CpuLatencyHold.Device));
         findings.Add(Steal(procStat));
         if (latencyProbe > TimeSpan.Zero)
         {
@@ -140,6 +141,15 @@ public static class Doctor
         return threads.GotRealtimePriority
             ? new DoctorFinding("real-time priority", $"this process may use {threads.Outcome}", null)
             : new DoctorFinding("real-time priority", threads.Outcome, "grant CAP_SYS_NICE (setcap cap_sys_nice+ep) or an rtprio limit, then run with --rt-priority 80");
+    }
+
+    /// <summary>Whether a run can hold the CPUs' wake-up latency at 0 us (<see cref="CpuLatencyHold"/>): tried here and let go at once.</summary>
+    public static DoctorFinding WakeLatencyHold(string device)
+    {
+        using var hold = CpuLatencyHold.Request(device);
+        return hold.Held
+            ? new DoctorFinding("cpu idle states", $"{device} writable: real-time runs hold the CPUs' wake-up latency at 0 us", null)
+            : new DoctorFinding("cpu idle states", hold.Outcome, $"run as root, or give the operators' group write access to {device} with a udev rule");
     }
 
     private static DoctorFinding Governor(string sysRoot)

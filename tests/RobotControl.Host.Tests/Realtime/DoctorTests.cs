@@ -101,6 +101,21 @@ public sealed class DoctorTests : IDisposable
     }
 
     [Fact]
+    public void Whether_runs_can_hold_the_cpus_wake_up_latency_is_reported_with_what_to_change_when_not()
+    {
+        var dir = Directory.CreateTempSubdirectory("rcqos").FullName;
+        var writable = Path.Combine(dir, "cpu_dma_latency");
+        File.WriteAllBytes(writable, [1, 0, 0, 0]);
+        var held = Doctor.WakeLatencyHold(writable);
+        Assert.Equal($"{writable} writable: real-time runs hold the CPUs' wake-up latency at 0 us", held.Found);
+        Assert.Null(held.Advice);
+
+        var missing = Doctor.WakeLatencyHold(Path.Combine(dir, "none", "cpu_dma_latency"));
+        Assert.Contains("not held", missing.Found, StringComparison.Ordinal);
+        Assert.Contains("udev rule", missing.Advice, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void A_missing_device_is_one_clear_error()
     {
         var ex = Assert.Throws<FormatException>(() => Doctor.Examine("serial:/dev/robotcontrol-none", Sys));
