@@ -24,6 +24,9 @@ public sealed partial class HeadlessSession : IConsoleSession
     private static readonly TimeSpan PublishEvery = TimeSpan.FromMilliseconds(100);
     private static readonly TimeSpan PollEvery = TimeSpan.FromMilliseconds(200);
 
+    /// <summary>How many times a module's parameters are tried before they are left unknown.</summary>
+    private const int ParameterReadTries = 5;
+
     private readonly RobotSession _session;
     private readonly TimeProvider _clock;
     private readonly RobotDefinition _robot;
@@ -36,11 +39,13 @@ public sealed partial class HeadlessSession : IConsoleSession
     private readonly Dictionary<int, ModuleStatus> _status = [];
     private readonly Dictionary<(int Module, int Channel, string Key), double> _parameters = [];
     private readonly Queue<RobotController> _pendingReads = new();
+    private readonly Dictionary<int, int> _parameterTries = [];
     private readonly TickStatistics _busTiming = new();
     private readonly TickStatistics _pollTiming = new();
     private readonly TickStatistics _commandTiming = new();
     private readonly CancellationTokenSource _stop = new();
     private readonly Lock _closeLock = new();
+    private readonly Host.Realtime.RealtimeThreads _threads;
     private readonly Thread _thread;
     private readonly long _begin;
     private volatile SessionStatus _statusView;
@@ -64,6 +69,7 @@ public sealed partial class HeadlessSession : IConsoleSession
     public HeadlessSession(HeadlessSessionOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
+        _threads = options.Threads ?? Host.Realtime.RealtimeThreads.Default;
         var slot = new ObserverSlot();
         var faults = new ConsoleFaults(options.Inject, options.Virtual);
         _session = RobotSession.Open(
@@ -225,9 +231,9 @@ public sealed partial class HeadlessSession : IConsoleSession
     {
         // The loop runs on its own thread; this thread owns the bus, so the console's commands run between cycles.
         using var latency = Host.Realtime.CpuLatencyHold.Request(); // idle CPUs wake at once, as in a real-time run
-        _events.Add(Now, "session", latency.Outcome);
         var loop = _session.Loop;
-        loop.Start();
+        _threads.Start(prologue => prologue(), loop.Start); // this thread schedules itself, the loop thread its own
+        _events.Add(Now, "session", $"threads: {_threads.Outcome}; {latency.Outcome}");
         var nextPublish = 0.0;
         var nextPoll = 0.0;
         try
@@ -288,7 +294,7 @@ public sealed partial class HeadlessSession : IConsoleSession
             begin = Stopwatch.GetTimestamp();
             if (_pendingReads.TryDequeue(out var unread))
             {
-                ReadParameters(unread);
+                TryReadParameters(unread);
             }
             else
             {
@@ -347,42 +353,6 @@ public sealed partial class HeadlessSession : IConsoleSession
         for (; _tripsLogged < trips.Count; _tripsLogged++)
         {
             _events.Add(Now, "safety", $"trip: {trips[_tripsLogged]}");
-        }
-    }
-
-    private void ReadParameters(RobotController c)
-    {
-        foreach (var m in c.Motors)
-        {
-            foreach (var p in MotorParameter.All)
-            {
-                _parameters[(c.Id, m.Config.Channel, p.Key)] = p.FromCounts(m.Config, _bus.ReadParameter(c.Id, p.Field.Name, m.Config.Channel));
-            }
-        }
-    }
-
-    /// <summary>Reads the status of the next present module (round robin).</summary>
-    private void PollNextModule()
-    {
-        var controllers = _bus.Controllers;
-        for (var n = 0; n < controllers.Count; n++)
-        {
-            var c = controllers[_pollNext++ % controllers.Count];
-            if (!c.Present)
-            {
-                continue;
-            }
-
-            try
-            {
-                _status[c.Id] = ModuleStatus.Read(_bus, c);
-            }
-            catch (IOException)
-            {
-                // A module that stops answering is reported by the bus cycles; keep its last status.
-            }
-
-            return;
         }
     }
 

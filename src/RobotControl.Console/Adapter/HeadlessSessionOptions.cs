@@ -1,4 +1,5 @@
 using RobotControl.Host.Harness;
+using RobotControl.Host.Realtime;
 using RobotControl.Runtime.Discovery;
 
 namespace RobotControl.WebConsole.Adapter;
@@ -26,4 +27,10 @@ public sealed record HeadlessSessionOptions
 
     /// <summary>Faults injected into the virtual robot (<c>silent=</c> only: see <see cref="ConsoleFaults"/>).</summary>
     public FaultInjection Inject { get; init; } = FaultInjection.None;
+
+    /// <summary>
+    /// On a real bus, how the session's bus thread and the loop thread are scheduled (SCHED_FIFO priority, CPU pin);
+    /// null: normal scheduling. The virtual robot runs paced on the session thread and ignores it.
+    /// </summary>
+    public RealtimeThreads? Threads { get; init; }
 }

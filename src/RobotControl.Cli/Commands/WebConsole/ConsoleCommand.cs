@@ -15,7 +15,7 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.Cli.Commands.WebConsole;
 
 /// <summary>
-/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open [--page surgeon] [--kiosk]] [--inject silent=...] [--report session.json]</c>:
+/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open [--page surgeon] [--kiosk]] [--inject silent=...] [--report session.json] [--rt-priority 80] [--cpu N]</c>:
 /// starts the session and serves the web console (pages and JSON/WebSocket API) from this process until Ctrl+C or
 /// SIGTERM. The stop switches the motors off, reads every module back, prints what they said and writes the session's
 /// report (<c>--report</c>); the exit code is 0 when every module answered with torque off, 1 otherwise.
@@ -36,10 +36,12 @@ internal sealed class ConsoleCommand : ICliCommand
         var inject = new Option<string?>("--inject") { Description = "Faults for the virtual robot: silent=<module>@<time>, e.g. silent=left.forearm@30s (see docs/safety.md)" };
         var page = new Option<string?>("--page") { Description = "The page --open shows: bus, plots, view3d, status, editor or surgeon" };
         var kiosk = new Option<bool>("--kiosk") { Description = "With --open: full screen, no browser controls (Chromium's --kiosk)" };
+        var rtPriority = CliOption.Number("--rt-priority", "Real time, on a real bus: run the session's bus thread and the loop thread with SCHED_FIFO at this priority (1..99; 0: normal scheduling)", 0, 99, 0);
+        var cpu = CliOption.OptionalNumber<int>("--cpu", "Real time, on a real bus: pin the bus and loop threads to this CPU", 0, 1023);
         var report = CliOption.OutputFile("--report", "At the stop, write the session's report (JSON: last status, the stop's read-back, events, timings) to this file (checked before the session starts)");
         var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status, graph editor and the surgeon's view of a running session.");
         command.Arguments.Add(graph);
-        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed, inject, page, kiosk, report })
+        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed, inject, page, kiosk, report, rtPriority, cpu })
         {
             command.Options.Add(o);
         }
@@ -53,7 +55,7 @@ internal sealed class ConsoleCommand : ICliCommand
             parse.GetValue(open),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
-            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk), parse.GetValue(report)?.FullName),
+            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk), parse.GetValue(report)?.FullName, new RunExtras(null, false, parse.GetValue(rtPriority), parse.GetValue(cpu))),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -88,7 +90,7 @@ internal sealed class ConsoleCommand : ICliCommand
             }
 
             extras.CheckPage();
-            options = new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed };
+            options = new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed, Threads = extras.Scheduling.Threads() };
             session = new HeadlessSession(options with { Inject = FaultInjection.Parse(extras.Inject) }); // faults for the first session only, not for graphs started from the editor
         }
         catch (GraphException ex)

@@ -1,3 +1,5 @@
+using RobotControl.Cli.Commands.Run;
+
 namespace RobotControl.Cli.Commands.WebConsole;
 
 /// <summary>The console command's options for the surgeon's station: injected faults, the page to open, kiosk mode, the report.</summary>
@@ -5,7 +7,8 @@ namespace RobotControl.Cli.Commands.WebConsole;
 /// <param name="Page">The <c>--page</c> to open, or null (the bus page).</param>
 /// <param name="Kiosk">True: <c>--kiosk</c>.</param>
 /// <param name="Report">The <c>--report</c> file written at the stop, or null.</param>
-internal sealed record ConsoleExtras(string? Inject, string? Page, bool Kiosk, string? Report)
+/// <param name="Scheduling"><c>--rt-priority</c> and <c>--cpu</c>, checked as <c>run</c> checks them.</param>
+internal sealed record ConsoleExtras(string? Inject, string? Page, bool Kiosk, string? Report, RunExtras Scheduling)
 {
     /// <summary>The console's pages (the front-end's routes).</summary>
     public static readonly IReadOnlyList<string> Pages = ["bus", "plots", "view3d", "status", "editor", "surgeon"];

@@ -44,11 +44,11 @@ public sealed class ConsoleStopTests
     }
 
     [Fact]
-    public void SIGTERM_on_a_pty_bus_leaves_every_module_torque_off_as_read_back_independently()
+    public void SIGTERM_on_a_pty_bus_with_real_time_threads_leaves_every_module_torque_off_as_read_back_independently()
     {
         using var sim = new SimulatorProcess(Patience);
         var report = Path.Combine(Directory.CreateTempSubdirectory("rcconsole").FullName, "session.json");
-        using (var console = new RunProcess("console", RunProcess.Graph, "--transport", sim.Transport, "--bind", "127.0.0.1:0", "--report", report))
+        using (var console = new RunProcess("console", RunProcess.Graph, "--transport", sim.Transport, "--bind", "127.0.0.1:0", "--report", report, "--rt-priority", "80"))
         {
             console.WaitFor("Ctrl+C stops", Patience);
             Thread.Sleep(1000); // the wall-clock loop and the bus thread run a while
@@ -62,12 +62,18 @@ public sealed class ConsoleStopTests
         {
             Assert.True(doc.RootElement.GetProperty("stop").GetProperty("torque_off").GetBoolean());
             Assert.StartsWith("serial:", doc.RootElement.GetProperty("status").GetProperty("transport").GetString(), StringComparison.Ordinal);
+            var threads = doc.RootElement.GetProperty("events").EnumerateArray().Select(e => e.GetProperty("message").GetString()!).Single(m => m.StartsWith("threads: ", StringComparison.Ordinal));
+            Assert.Matches("^threads: (SCHED_FIFO priority 80|no real-time priority: .*); any CPU; CPU wake-up latency (held at 0 us|not held: .*)", threads);
         }
 
         // A stall of this shared machine can trip a module's bus watchdog mid-session (the module doing its job); the
         // stop is what is tested: every module answers with torque off.
         sim.AssertTorqueOff(latchedAllowed: true);
     }
+
+    [Fact]
+    public void A_cpu_this_machine_does_not_have_is_refused_before_the_session_starts() =>
+        Cli.AssertRefused(Cli.Run("console", RunProcess.Graph, "--virtual", "--cpu", "1023"), $"--cpu 1023: this machine has CPUs 0..{Environment.ProcessorCount - 1}");
 
     [Fact]
     public void A_report_file_in_a_folder_that_does_not_exist_is_refused_before_the_session_starts() =>

@@ -1,0 +1,40 @@
+using System.Diagnostics;
+using RobotControl.Host.Harness;
+using RobotControl.WebConsole.Adapter;
+
+namespace RobotControl.WebConsole.Tests.Adapter;
+
+/// <summary>
+/// A module that does not answer its parameter reads (silent from the start) does not end the session: the reads are
+/// tried again on later turns and then left unknown, each said in the event log, and the session keeps running.
+/// </summary>
+public sealed class ParameterReadTests
+{
+    [Fact]
+    public async Task A_module_silent_from_the_start_leaves_its_parameters_unknown_and_the_session_running()
+    {
+        using var session = new HeadlessSession(new HeadlessSessionOptions
+        {
+            GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"),
+            Catalog = ConsoleFixture.Catalog(),
+            Virtual = true,
+            Inject = FaultInjection.Parse("silent=left.forearm@0s"),
+        });
+        var waited = Stopwatch.StartNew();
+        while (!session.EventsAfter(0).Any(e => e.Message.Contains("parameters stay unknown", StringComparison.Ordinal)))
+        {
+            Assert.True(waited.Elapsed < TimeSpan.FromSeconds(60), string.Join("\n", session.EventsAfter(0).Select(e => e.Message)));
+            Assert.NotEqual("failed", session.Status.Session);
+            await Task.Delay(50);
+        }
+
+        var messages = session.EventsAfter(0).Select(e => e.Message).ToList();
+        Assert.Contains(messages, m => m.EndsWith("reading module 13's parameters again later (try 1 of 5)", StringComparison.Ordinal));
+        Assert.Contains(messages, m => m.EndsWith("module 13's parameters stay unknown after 5 tries (reload them from the bus page)", StringComparison.Ordinal));
+        Assert.DoesNotContain(messages, m => m.StartsWith("the session thread stopped", StringComparison.Ordinal));
+        Assert.NotEqual("failed", session.Status.Session);
+        var stop = session.Close().Stop!;
+        Assert.Empty(stop.TorqueOn); // every module that answers has its motors off
+        Assert.Equal(["13 \"left forearm\""], stop.Unreachable); // the silent one cannot answer the read-back
+    }
+}
