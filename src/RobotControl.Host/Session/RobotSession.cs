@@ -171,8 +171,8 @@ public sealed class RobotSession : IDisposable
     }
 
     /// <summary>
-    /// Starts the bus thread and the loop thread (real bus, wall clock). The motors are still off: the bus cycle is
-    /// first run for <see cref="WarmUp"/> on this thread, and the stop's torque-off and read-back once (every path
+    /// Starts the bus thread and the loop thread (real bus, wall clock). The motors are still off: the code of the
+    /// graph and the cycle is compiled first (<see cref="CodeWarmUp"/>), the bus cycle is run for <see cref="WarmUp"/> on this thread, and the stop's torque-off and read-back once (every path
     /// JIT-compiled, buffers touched), so that the
     /// modules' bus watchdogs are armed only when the cycle runs at rate; then the motors go on (watchdogs armed) and
     /// the threads start straight away, with <paramref name="threads"/>' scheduling (priority, CPUs).
@@ -186,6 +186,7 @@ public sealed class RobotSession : IDisposable
             throw new InvalidOperationException(IsVirtual ? "a virtual session runs on its schedule (RunVirtual)" : "the session is running already");
         }
 
+        _ = CodeWarmUp.Prepare(CodeWarmUp.CycleTypes(Graph.Program)); // the graph's first ticks are not compiled on the loop thread
         Robot.RunFor(WarmUp);
         _ = StopCheck.TorqueOffAndVerify(Robot); // the stop's path too: compiled now, it cannot stall a stop past the watchdog
         Supervisor.Home("session"); // INIT -> HOMING -> PEDAL_UP: motors on, watchdogs armed
