@@ -231,6 +231,7 @@ public sealed partial class HeadlessSession : IConsoleSession
     {
         // The loop runs on its own thread; this thread owns the bus, so the console's commands run between cycles.
         using var latency = Host.Realtime.CpuLatencyHold.Request(); // idle CPUs wake at once, as in a real-time run
+        _ = _session.CompileAhead(); // the loop's first ticks do not wait for the JIT
         var loop = _session.Loop;
         _threads.Start(prologue => prologue(), loop.Start); // this thread schedules itself, the loop thread its own
         _events.Add(Now, "session", $"threads: {_threads.Outcome}; {latency.Outcome}");

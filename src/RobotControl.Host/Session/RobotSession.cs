@@ -186,7 +186,7 @@ public sealed class RobotSession : IDisposable
             throw new InvalidOperationException(IsVirtual ? "a virtual session runs on its schedule (RunVirtual)" : "the session is running already");
         }
 
-        _ = CodeWarmUp.Prepare(CodeWarmUp.CycleTypes(Graph.Program)); // the graph's first ticks are not compiled on the loop thread
+        _ = CompileAhead();
         Robot.RunFor(WarmUp);
         _ = StopCheck.TorqueOffAndVerify(Robot); // the stop's path too: compiled now, it cannot stall a stop past the watchdog
         Supervisor.Home("session"); // INIT -> HOMING -> PEDAL_UP: motors on, watchdogs armed
@@ -195,6 +195,14 @@ public sealed class RobotSession : IDisposable
         _cpuLatency = scheduling.HoldCpuLatency ? CpuLatencyHold.Request() : null; // until the stop: idle CPUs wake at once
         scheduling.Start(Robot.Start, Loop.Start); // each thread schedules itself (.NET threads do not inherit it)
     }
+
+    /// <summary>
+    /// Compiles the graph's and the cycle's code now (<see cref="CodeWarmUp"/>), so that the loop's first ticks do not
+    /// wait for the JIT; <see cref="StartRealtime"/> does it before arming, and a caller that runs the cycle itself
+    /// (the console) calls it before its threads start.
+    /// </summary>
+    /// <returns>How many methods were compiled.</returns>
+    public int CompileAhead() => CodeWarmUp.Prepare(CodeWarmUp.CycleTypes(Graph.Program));
 
     /// <summary>Whether the CPUs' wake-up latency is held for the run (<see cref="CpuLatencyHold"/>), in one line; null before <see cref="StartRealtime"/> or when not asked for.</summary>
     public string? CpuLatency => _cpuLatency?.Outcome;
