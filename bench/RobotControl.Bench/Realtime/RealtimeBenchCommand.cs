@@ -49,11 +49,11 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         int? cpu = Arg(args, "--cpu") is { } c ? int.Parse(c, CultureInfo.InvariantCulture) : null;
         var outFile = Arg(args, "--out");
         int? baud = Arg(args, "--baud") is { } b ? int.Parse(b, CultureInfo.InvariantCulture) : null;
-        var floorDuring = (Arg(args, "--floor-during") ?? "no") is "yes";
-        var holdLatency = (Arg(args, "--cpu-latency") ?? "hold") is "hold";
+        var floorDuring = Arg(args, "--floor-during") ?? "no";
+        var cpuLatency = Arg(args, "--cpu-latency") ?? "hold";
         var floorTime = TimeSpan.FromSeconds(double.Parse(Arg(args, "--floor-seconds") ?? "10", CultureInfo.InvariantCulture));
         if (!double.IsFinite(seconds) || seconds is < 1 or > 86_400 || scenarios.Any(s => s is not ("idle" or "idle-sll" or "busy"))
-            || floorTime < TimeSpan.Zero || floorTime > TimeSpan.FromHours(1) || (Arg(args, "--floor-during") ?? "no") is not ("yes" or "no") || (Arg(args, "--cpu-latency") ?? "hold") is not ("hold" or "free"))
+            || floorTime < TimeSpan.Zero || floorTime > TimeSpan.FromHours(1) || floorDuring is not ("yes" or "no") || cpuLatency is not ("hold" or "free"))
         {
             Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy, --floor-seconds 0..3600, --floor-during yes|no, --cpu-latency hold|free");
             return 2;
@@ -70,7 +70,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         Console.CancelKeyPress += cancel;
         try
         {
-            return Run(graph, robot, seconds, scenarios, new RealtimeThreads(priority, cpu) { HoldCpuLatency = holdLatency }, new SimSettings(simPriority, baud), new FloorSettings(floorTime, floorDuring), outFile, interrupt.Token);
+            return Run(graph, robot, seconds, scenarios, new RealtimeThreads(priority, cpu) { HoldCpuLatency = cpuLatency == "hold" }, new SimSettings(simPriority, baud), new FloorSettings(floorTime, floorDuring == "yes"), outFile, interrupt.Token);
         }
         finally
         {

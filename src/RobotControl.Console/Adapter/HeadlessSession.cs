@@ -230,11 +230,10 @@ public sealed partial class HeadlessSession : IConsoleSession
     private void RunRealTime()
     {
         // The loop runs on its own thread; this thread owns the bus, so the console's commands run between cycles.
-        using var latency = Host.Realtime.CpuLatencyHold.Request(); // idle CPUs wake at once, as in a real-time run
-        _ = _session.CompileAhead(); // the loop's first ticks do not wait for the JIT
+        _session.PrepareRealtime(_threads); // code compiled, wake-up latency held until the session's stop, as in a run
         var loop = _session.Loop;
         _threads.Start(prologue => prologue(), loop.Start); // this thread schedules itself, the loop thread its own
-        _events.Add(Now, "session", $"threads: {_threads.Outcome}; {latency.Outcome}");
+        _events.Add(Now, "session", $"threads: {_threads.Outcome}{(_session.CpuLatency is { } latency ? "; " + latency : "")}");
         var nextPublish = 0.0;
         var nextPoll = 0.0;
         try

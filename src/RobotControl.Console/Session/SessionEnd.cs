@@ -1,3 +1,4 @@
+using System.Text;
 using System.Text.Json;
 using RobotControl.Host.Session;
 
@@ -15,7 +16,6 @@ public sealed record SessionEnd(SessionStatus Status, StopCheck? Stop, IReadOnly
 {
     private static readonly JsonSerializerOptions Options = new(JsonSerializerDefaults.Web)
     {
-        WriteIndented = true,
         PropertyNamingPolicy = JsonNamingPolicy.SnakeCaseLower,
         NumberHandling = System.Text.Json.Serialization.JsonNumberHandling.AllowNamedFloatingPointLiterals,
     };
@@ -23,14 +23,31 @@ public sealed record SessionEnd(SessionStatus Status, StopCheck? Stop, IReadOnly
     /// <summary>True when every module answered the stop's read-back with torque off.</summary>
     public bool TorqueOff => Stop?.TorqueOff == true;
 
-    /// <summary>The report: status, stop (with <c>torque_off</c>), events and timings, in the run report's snake_case.</summary>
-    public string ToJson() => JsonSerializer.Serialize(
-        new
+    /// <summary>The report: status, stop (as in a run's report: <see cref="StopCheck.Write"/>), events and timings, in snake_case.</summary>
+    public string ToJson()
+    {
+        using var stream = new MemoryStream();
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
         {
-            Status,
-            Stop = Stop is null ? null : new { Stop.Modules, Stop.TorqueOff, Stop.TorqueOn, Stop.LatchedErrors, Stop.Unreachable },
-            Events,
-            Timings,
-        },
-        Options);
+            w.WriteStartObject();
+            w.WritePropertyName("status");
+            JsonSerializer.Serialize(w, Status, Options);
+            if (Stop is null)
+            {
+                w.WriteNull("stop"); // the session never reached a robot
+            }
+            else
+            {
+                Stop.Write(w);
+            }
+
+            w.WritePropertyName("events");
+            JsonSerializer.Serialize(w, Events, Options);
+            w.WritePropertyName("timings");
+            JsonSerializer.Serialize(w, Timings, Options);
+            w.WriteEndObject();
+        }
+
+        return Encoding.UTF8.GetString(stream.ToArray()) + Environment.NewLine;
+    }
 }

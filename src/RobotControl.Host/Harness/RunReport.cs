@@ -92,33 +92,12 @@ public sealed record RunReport(
                 w.WriteString("scheduling", Scheduling);
             }
 
-            if (Stop is { } stop)
-            {
-                w.WriteStartObject("stop");
-                w.WriteNumber("modules", stop.Modules);
-                w.WriteBoolean("torque_off", stop.TorqueOff);
-                WriteList(w, "torque_on", stop.TorqueOn);
-                WriteList(w, "latched_errors", stop.LatchedErrors);
-                WriteList(w, "unreachable", stop.Unreachable);
-                w.WriteEndObject();
-            }
-
+            Stop?.Write(w);
             Safety?.Write(w);
             w.WriteEndObject();
         }
 
         return Encoding.UTF8.GetString(stream.ToArray()) + Environment.NewLine;
-    }
-
-    private static void WriteList(Utf8JsonWriter w, string name, IReadOnlyList<string> items)
-    {
-        w.WriteStartArray(name);
-        foreach (var item in items)
-        {
-            w.WriteStringValue(item);
-        }
-
-        w.WriteEndArray();
     }
 }
 

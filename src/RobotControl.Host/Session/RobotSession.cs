@@ -186,25 +186,31 @@ public sealed class RobotSession : IDisposable
             throw new InvalidOperationException(IsVirtual ? "a virtual session runs on its schedule (RunVirtual)" : "the session is running already");
         }
 
-        _ = CompileAhead();
+        var scheduling = threads ?? RealtimeThreads.Default;
+        PrepareRealtime(scheduling);
         Robot.RunFor(WarmUp);
         _ = StopCheck.TorqueOffAndVerify(Robot); // the stop's path too: compiled now, it cannot stall a stop past the watchdog
         Supervisor.Home("session"); // INIT -> HOMING -> PEDAL_UP: motors on, watchdogs armed
         _running = true;
-        var scheduling = threads ?? RealtimeThreads.Default;
-        _cpuLatency = scheduling.HoldCpuLatency ? CpuLatencyHold.Request() : null; // until the stop: idle CPUs wake at once
         scheduling.Start(Robot.Start, Loop.Start); // each thread schedules itself (.NET threads do not inherit it)
     }
 
     /// <summary>
-    /// Compiles the graph's and the cycle's code now (<see cref="CodeWarmUp"/>), so that the loop's first ticks do not
-    /// wait for the JIT; <see cref="StartRealtime"/> does it before arming, and a caller that runs the cycle itself
-    /// (the console) calls it before its threads start.
+    /// What every wall-clock run does before its threads start: compiles the graph's and the cycle's code
+    /// (<see cref="CodeWarmUp"/>), so that the loop's first ticks do not wait for the JIT, and, when
+    /// <paramref name="threads"/> ask for it, holds the CPUs' wake-up latency at 0 us until <see cref="Stop"/>.
+    /// <see cref="StartRealtime"/> calls it before arming; a caller that runs the bus cycle on its own thread (the
+    /// console) calls it before starting its threads.
     /// </summary>
-    /// <returns>How many methods were compiled.</returns>
-    public int CompileAhead() => CodeWarmUp.Prepare(CodeWarmUp.CycleTypes(Graph.Program));
+    public void PrepareRealtime(RealtimeThreads threads)
+    {
+        ArgumentNullException.ThrowIfNull(threads);
+        _ = CodeWarmUp.Prepare(CodeWarmUp.CycleTypes(Graph.Program));
+        _cpuLatency?.Dispose();
+        _cpuLatency = threads.HoldCpuLatency ? CpuLatencyHold.Request() : null; // until the stop: idle CPUs wake at once
+    }
 
-    /// <summary>Whether the CPUs' wake-up latency is held for the run (<see cref="CpuLatencyHold"/>), in one line; null before <see cref="StartRealtime"/> or when not asked for.</summary>
+    /// <summary>Whether the CPUs' wake-up latency is held for the run (<see cref="CpuLatencyHold"/>), in one line; null before <see cref="PrepareRealtime"/> or when not asked for.</summary>
     public string? CpuLatency => _cpuLatency?.Outcome;
 
     /// <summary>
@@ -218,8 +224,9 @@ public sealed class RobotSession : IDisposable
             _running = false;
             Loop.Stop();
             Robot.Stop();
-            _cpuLatency?.Dispose();
         }
+
+        _cpuLatency?.Dispose();
 
         return _stopped ??= StopCheck.TorqueOffAndVerify(Robot);
     }

@@ -1,3 +1,4 @@
+using System.Text.Json;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Modules;
@@ -24,6 +25,22 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
     public string Summary => TorqueOff
         ? $"torque off on all {Modules} modules (read back)"
         : $"torque NOT confirmed off: on at [{string.Join(", ", TorqueOn)}], no answer from [{string.Join(", ", Unreachable)}]";
+
+    /// <summary>
+    /// Writes the read-back as the reports' <c>"stop"</c> object: <c>modules</c>, <c>torque_off</c>, <c>torque_on</c>,
+    /// <c>latched_errors</c>, <c>unreachable</c> (a run's <c>report.json</c> and the console's session report).
+    /// </summary>
+    public void Write(Utf8JsonWriter w)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        w.WriteStartObject("stop");
+        w.WriteNumber("modules", Modules);
+        w.WriteBoolean("torque_off", TorqueOff);
+        WriteList(w, "torque_on", TorqueOn);
+        WriteList(w, "latched_errors", LatchedErrors);
+        WriteList(w, "unreachable", Unreachable);
+        w.WriteEndObject();
+    }
 
     /// <summary>
     /// Switches the motors off (through the robot's state machine; if a module refuses, by writing torque and watchdog
@@ -77,6 +94,17 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
         }
 
         return new StopCheck(robot.Controllers.Count, on, latched, unreachable);
+    }
+
+    private static void WriteList(Utf8JsonWriter w, string name, IReadOnlyList<string> items)
+    {
+        w.WriteStartArray(name);
+        foreach (var item in items)
+        {
+            w.WriteStringValue(item);
+        }
+
+        w.WriteEndArray();
     }
 
     private static int Span(ControlTableField field) => ((field.Count - 1) * field.Stride) + field.Size;
