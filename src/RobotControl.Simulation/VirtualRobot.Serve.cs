@@ -1,3 +1,5 @@
+using System.Runtime;
+using System.Runtime.CompilerServices;
 using RobotControl.Bus.Transports;
 using RobotControl.Bus.Transports.Serial;
 using RobotControl.Simulation.Native;
@@ -11,6 +13,12 @@ public sealed unsafe partial class VirtualRobot
     /// Serves the bus on <paramref name="port"/> (a pty master or any byte link) in real time until cancelled: bytes
     /// from the port go to the modules, their replies back, and simulated time follows the wall clock.
     /// </summary>
+    /// <remarks>
+    /// Optimized once, before serving starts: as quick (tier-0) code, this loop was replaced on the stack after about
+    /// 1–2 s of serving by a synchronous compile of 17–23 ms on this thread, during which no module answered; the host
+    /// saw a bus cycle of over 10 ms and tripped (docs/perf/realtime.md).
+    /// </remarks>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public void Serve(IByteLink port, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(port);
@@ -20,8 +28,17 @@ public sealed unsafe partial class VirtualRobot
         var pty = port as PseudoTerminal;
         var last = start;
         var lastCpu = Environment.CpuUsage.TotalTime;
+        var compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true);
+        var compileTime = JitInfo.GetCompilationTime(currentThread: true);
+        var turns = 0L;
         while (!cancellationToken.IsCancellationRequested)
         {
+            if (++turns == 2)
+            {
+                compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true); // after the first turn
+                compileTime = JitInfo.GetCompilationTime(currentThread: true);
+            }
+
             var now = System.Diagnostics.Stopwatch.GetTimestamp();
             var cpu = Environment.CpuUsage.TotalTime;
             if (now - last > LongestServeGap.Ticks * System.Diagnostics.Stopwatch.Frequency / TimeSpan.TicksPerSecond)
@@ -69,6 +86,9 @@ public sealed unsafe partial class VirtualRobot
             }
             while (_nowUs < wall && !cancellationToken.IsCancellationRequested);
         }
+
+        MethodsCompiledWhileServing = JitInfo.GetCompiledMethodCount(currentThread: true) - compiledMethods;
+        CompileTimeWhileServing = JitInfo.GetCompilationTime(currentThread: true) - compileTime;
     }
 
     /// <summary>The baud the simulated line runs at now (it follows the client's pty setting when served on a pty).</summary>
@@ -91,6 +111,12 @@ public sealed unsafe partial class VirtualRobot
     /// then simulates up to now): longer than about 1 ms, the simulator was not running (preempted, paused, stalled).
     /// </summary>
     public TimeSpan LongestServeGap { get; private set; }
+
+    /// <summary>Methods the JIT compiled on the serving thread after its first turn of <see cref="Serve"/>; known once it has returned.</summary>
+    public long MethodsCompiledWhileServing { get; private set; }
+
+    /// <summary>Time the serving thread spent in the JIT after its first turn (see <see cref="MethodsCompiledWhileServing"/>).</summary>
+    public TimeSpan CompileTimeWhileServing { get; private set; }
 
     /// <summary>When the <see cref="LongestServeGap"/> began, wall-clock time after serving started.</summary>
     public TimeSpan LongestServeGapAt { get; private set; }

@@ -201,6 +201,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                 floorDuring?.GetAwaiter().GetResult(),
                 stealMs,
                 simEnd,
+                report.Compiled?.Summary ?? "not measured",
                 StartupGap.Longest(cycles.Starts, cycles.Trace, 3));
         }
     }

@@ -42,6 +42,7 @@ internal sealed record ScenarioResult(
     PlatformFloor? PlatformFloorDuringRun,
     double StealMs,
     string Simulator,
+    string CompiledAfterStart,
     IReadOnlyList<StartupGap> LongestStartupCycles)
 {
     /// <summary>One summary line for the console.</summary>
@@ -52,6 +53,7 @@ internal sealed record ScenarioResult(
         + $"tracking {TrackingRmsMm:F3}/{TrackingMaxMm:F3} mm ({TrackingRmsOverVirtual:F2}x virtual), alloc {AllocatedBytesPerTick:F1} B/tick, gen0 {Gen0Collections} gen2 {Gen2Collections}, GC pauses {GcPauseMs:F1} ms (longest recent {GcLongestRecentPauseMs:F1} ms), stolen {StealMs:F0} ms, {Scheduling}{(LoadProblem is null ? "" : "; " + LoadProblem)}")
         + FloorLine()
         + $"\n  simulator: {Simulator}"
+        + $"\n  compiled after start: {CompiledAfterStart}"
         + string.Concat(LongestStartupCycles.Select(g => string.Create(CultureInfo.InvariantCulture, $"\n  long cycle at {g.AtS:F3} s (traced start): {g.CycleMs:F1} ms, {g.ReadWaitMs:F1} ms in reads ({g.EmptyReads} empty), longest with no link call {g.LongestIdleMs:F1} ms")));
 
     private string FloorLine() => FloorLine(PlatformFloor, "before the run") + FloorLine(PlatformFloorDuringRun, "alongside the run");

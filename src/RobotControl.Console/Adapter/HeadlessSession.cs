@@ -227,6 +227,9 @@ public sealed partial class HeadlessSession : IConsoleSession
         Interlocked.Add(ref _tickAllocatedBytes, GC.GetAllocatedBytesForCurrentThread() - before);
     }
 
+    // Optimized once: this loop runs for the whole session, and tier-0 code would be replaced on the stack by a
+    // synchronous compile on the bus thread once it had looped long enough, with the watchdogs armed.
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveOptimization)]
     private void RunRealTime()
     {
         // The loop runs on its own thread; this thread owns the bus, so the console's commands run between cycles.

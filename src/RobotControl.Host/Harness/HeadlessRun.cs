@@ -184,7 +184,11 @@ public static class HeadlessRun
             faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"control loop failed: {failure.Message}"));
         }
 
-        return Finish(stopper, check, loop, meter!, elapsed, session, faults) with { Scheduling = $"{threads.Outcome}; GC {options.RealtimeGcLatency}{(session.CpuLatency is { } latency ? "; " + latency : "")}" };
+        return Finish(stopper, check, loop, meter!, elapsed, session, faults) with
+        {
+            Scheduling = $"{threads.Outcome}; GC {options.RealtimeGcLatency}{(session.CpuLatency is { } latency ? "; " + latency : "")}",
+            Compiled = new CompiledAfterStart(loop.MethodsCompiledAfterFirstTick, loop.CompileTimeAfterFirstTick, bus.MethodsCompiledAfterFirstCycle, bus.CompileTimeAfterFirstCycle),
+        };
     }
 
     /// <summary>The report, with how the run ended and what the modules said after the motors were switched off.</summary>

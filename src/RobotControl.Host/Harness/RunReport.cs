@@ -9,7 +9,7 @@ namespace RobotControl.Host.Harness;
 /// The outcome of a headless run, written as <c>report.json</c>:
 /// <c>{"duration_s", "ticks", "deadline_misses", "tick_us": {"median", "p99", "max"}, "tracking_error_mm": {"rms",
 /// "max"}, "bus": {"frames", "crc_errors", "timeouts", "retries", "late_replies"}, "faults": [...], "interrupted", "stopped_on_fault",
-/// "scheduling" (real time), "stop": {"modules", "torque_off", "torque_on", "latched_errors", "unreachable"}}, "safety": {...}}</c>
+/// "scheduling" and "compiled_after_start" (real time), "stop": {"modules", "torque_off", "torque_on", "latched_errors", "unreachable"}}, "safety": {...}}</c>
 /// (<see cref="SafetyReport"/>).
 /// </summary>
 /// <param name="DurationSeconds">Loop time covered, seconds.</param>
@@ -47,6 +47,9 @@ public sealed record RunReport(
 
     /// <summary>How the real-time threads were scheduled (null: a virtual run).</summary>
     public string? Scheduling { get; init; }
+
+    /// <summary>What the JIT compiled on the real-time threads once they ran (null: a virtual run).</summary>
+    public CompiledAfterStart? Compiled { get; init; }
 
     /// <summary>The report as JSON in the documented schema.</summary>
     public string ToJson()
@@ -91,6 +94,8 @@ public sealed record RunReport(
             {
                 w.WriteString("scheduling", Scheduling);
             }
+
+            Compiled?.Write(w);
 
             Stop?.Write(w);
             Safety?.Write(w);

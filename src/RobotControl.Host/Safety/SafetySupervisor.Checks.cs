@@ -78,7 +78,7 @@ public sealed partial class SafetySupervisor
     private void MasterTimeout(int arm, double age, long now)
     {
         var joint = _robot.Definition.Arms[arm].Name;
-        if (Limits.SafeStateOf(SafetyCheck.MasterTimeout) == SafeState.TorqueOff)
+        if (_safeStates[(int)SafetyCheck.MasterTimeout] == SafeState.TorqueOff)
         {
             Trip(SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", now);
             return;

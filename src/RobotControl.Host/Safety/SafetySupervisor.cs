@@ -41,6 +41,7 @@ public sealed partial class SafetySupervisor
     private readonly double[] _potLimit;
     private readonly long[] _answeredAt;
     private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
+    private readonly SafeState[] _safeStates; // per check, looked up once: a trip's path does no dictionary lookup
     private readonly long _trackingTicks;
     private readonly long _currentTicks;
     private readonly long _potTicks;
@@ -76,6 +77,7 @@ public sealed partial class SafetySupervisor
         _trackingSince = new long[_motors.Length];
         _currentSince = new long[_motors.Length];
         _potSince = new long[_motors.Length];
+        _safeStates = [.. Enum.GetValues<SafetyCheck>().Select(limits.SafeStateOf)];
         _trackingLimit = [.. _motorNames.Select(limits.TrackingErrorRadOf)];
         _potLimit = [.. _motorNames.Select(limits.PotDistanceRadOf)];
         _answeredAt = new long[_controllers.Length];
@@ -134,7 +136,7 @@ public sealed partial class SafetySupervisor
     /// <summary>Records a trip (once per check until a reset), takes its safe state and moves to E-STOP.</summary>
     private void Trip(SafetyCheck check, string joint, double measured, double limit, string unit, long now, string source = TripSource, string? reason = null)
     {
-        var action = Limits.SafeStateOf(check);
+        var action = _safeStates[(int)check];
         lock (_tripGate)
         {
             if (_tripped[(int)check])

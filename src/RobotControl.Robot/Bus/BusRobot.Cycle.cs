@@ -1,4 +1,6 @@
 using System.Buffers.Binary;
+using System.Runtime;
+using System.Runtime.CompilerServices;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Modules;
@@ -39,6 +41,15 @@ public sealed partial class BusRobot
         }) { IsBackground = true, Name = $"bus {Definition.Name}", Priority = ThreadPriority.AboveNormal };
         _thread.Start();
     }
+
+    /// <summary>
+    /// Methods the JIT compiled on the bus thread after its first cycle (paths first taken later: status polls, module
+    /// searches, faults); known once the thread has ended (<see cref="Stop"/>).
+    /// </summary>
+    public long MethodsCompiledAfterFirstCycle { get; private set; }
+
+    /// <summary>Time the bus thread spent in the JIT after its first cycle (see <see cref="MethodsCompiledAfterFirstCycle"/>).</summary>
+    public TimeSpan CompileTimeAfterFirstCycle { get; private set; }
 
     /// <summary>Stops the bus thread.</summary>
     public void Stop()
@@ -166,9 +177,15 @@ public sealed partial class BusRobot
         AfterUpdate?.Invoke();
     }
 
+    // Optimized once, before the first cycle: a loop that runs for the whole session would otherwise start as quick
+    // (tier-0) code and be replaced on the stack once it had looped long enough, a synchronous compile on this thread.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Loop()
     {
         var period = (long)(_options.MinimumCyclePeriod.TotalSeconds * _time.TimestampFrequency);
+        var afterFirstCycle = false;
+        var compiledMethods = 0L;
+        var compileTime = TimeSpan.Zero;
         while (!_stopping)
         {
             var start = _time.GetTimestamp();
@@ -183,10 +200,23 @@ public sealed partial class BusRobot
                 Thread.Sleep(10);
             }
 
+            if (!afterFirstCycle)
+            {
+                afterFirstCycle = true;
+                compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true);
+                compileTime = JitInfo.GetCompilationTime(currentThread: true);
+            }
+
             while (period > 0 && _time.GetTimestamp() - start < period && !_stopping)
             {
                 Thread.SpinWait(50);
             }
+        }
+
+        if (afterFirstCycle)
+        {
+            MethodsCompiledAfterFirstCycle = JitInfo.GetCompiledMethodCount(currentThread: true) - compiledMethods;
+            CompileTimeAfterFirstCycle = JitInfo.GetCompilationTime(currentThread: true) - compileTime;
         }
     }
 

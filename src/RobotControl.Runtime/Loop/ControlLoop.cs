@@ -1,4 +1,6 @@
 using System.Diagnostics;
+using System.Runtime;
+using System.Runtime.CompilerServices;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Runtime.Graph;
 
@@ -67,6 +69,15 @@ public sealed class ControlLoop : IDisposable
     /// <summary>The exception that ended the loop thread (the graph isolates plug-in faults; this is anything else).</summary>
     public Exception? ThreadFailure => _threadFailure;
 
+    /// <summary>
+    /// Methods the JIT compiled on the loop thread after its first tick (0 when every path ran before, or had been
+    /// compiled ahead); known once the thread has ended (<see cref="Stop"/>).
+    /// </summary>
+    public long MethodsCompiledAfterFirstTick { get; private set; }
+
+    /// <summary>Time the loop thread spent in the JIT after its first tick (see <see cref="MethodsCompiledAfterFirstTick"/>).</summary>
+    public TimeSpan CompileTimeAfterFirstTick { get; private set; }
+
     /// <summary>Runs one tick at the clock's current time (virtual-time use). Starts the graph on the first call.</summary>
     public void Step()
     {
@@ -126,8 +137,15 @@ public sealed class ControlLoop : IDisposable
         Program.Start(new TickContext(0, _startTimestamp, TimeSpan.Zero, Period));
     }
 
+    // Optimized once, before the first tick: a loop that runs for the whole session would otherwise start as quick
+    // (tier-0) code and be replaced on the stack once it had looped long enough, a synchronous compile on this thread
+    // (14 ms, 11 s into a run; docs/perf/realtime.md).
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void ThreadMain()
     {
+        var afterFirstTick = false;
+        var compiledMethods = 0L;
+        var compileTime = TimeSpan.Zero;
         try
         {
             EnsureStarted();
@@ -142,6 +160,12 @@ public sealed class ControlLoop : IDisposable
                 var now = _time.GetTimestamp();
                 Statistics.RecordStartLag((now - _nextDue) * 1e6 / _time.TimestampFrequency);
                 RunTick(now);
+                if (!afterFirstTick)
+                {
+                    afterFirstTick = true;
+                    compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true); // after the first tick
+                    compileTime = JitInfo.GetCompilationTime(currentThread: true);
+                }
             }
         }
 #pragma warning disable CA1031 // surfaced through ThreadFailure; the harness reports it
@@ -149,6 +173,14 @@ public sealed class ControlLoop : IDisposable
 #pragma warning restore CA1031
         {
             _threadFailure = ex;
+        }
+        finally
+        {
+            if (afterFirstTick)
+            {
+                MethodsCompiledAfterFirstTick = JitInfo.GetCompiledMethodCount(currentThread: true) - compiledMethods;
+                CompileTimeAfterFirstTick = JitInfo.GetCompilationTime(currentThread: true) - compileTime;
+            }
         }
     }
 

@@ -3,15 +3,16 @@ using RobotControl.Host.Session;
 
 namespace RobotControl.Host.Tests.Session;
 
-/// <summary>What is compiled before arming: the graph's plug-in types and the cycle's, concrete methods only.</summary>
+/// <summary>What is compiled before arming: the graph's plug-in types and the cycle's, concrete methods and constructors only.</summary>
 public sealed class CodeWarmUpTests
 {
     [Fact]
-    public void Concrete_methods_are_prepared_and_generic_definitions_and_abstract_ones_skipped()
+    public void Concrete_methods_and_constructors_are_prepared_and_generic_definitions_and_abstract_ones_skipped()
     {
         // Sample: Twice, Nested.Thrice (a nested type is included); skipped: Any<T> (generic), Shape.Area (abstract).
         Assert.Equal(2, CodeWarmUp.Prepare([typeof(Sample)]));
-        Assert.Equal(1, CodeWarmUp.Prepare([typeof(Shape)])); // Shape.Name is concrete, Area abstract
+        Assert.Equal(2, CodeWarmUp.Prepare([typeof(Shape)])); // Shape.Name and the constructor; Area is abstract
+        Assert.Equal(2, CodeWarmUp.Prepare([typeof(Point)])); // the constructor a tick would call, and X
     }
 
     [Fact]
@@ -22,6 +23,8 @@ public sealed class CodeWarmUpTests
         Assert.All(session.Graph.Program.Order, p => Assert.Contains(p.GetType(), types));
         Assert.Contains(typeof(Runtime.Loop.ControlLoop), types);
         Assert.Contains(typeof(Host.Safety.SafetySupervisor), types);
+        Assert.Contains(typeof(Host.Safety.SafetyLimits), types); // a trip's path
+        Assert.Contains(typeof(Modules.HardwareErrors), types);
         Assert.Contains(types, t => t.Assembly.GetName().Name == "RobotControl.Kinematics");
     }
 
@@ -35,6 +38,11 @@ public sealed class CodeWarmUpTests
         {
             public static int Thrice(int x) => 3 * x;
         }
+    }
+
+    private readonly struct Point(double x)
+    {
+        public double X { get; } = x;
     }
 
     private abstract class Shape

@@ -42,6 +42,22 @@ public sealed class HeadlessRunTests
     }
 
     [Fact]
+    public void A_real_time_report_says_what_the_threads_compiled_after_they_started()
+    {
+        var compiled = new CompiledAfterStart(1, TimeSpan.FromMicroseconds(30), 14, TimeSpan.FromMicroseconds(1150));
+        var json = new RunReport(1, 2, 3, 4, 5, 6, 7, 8, new BusReport(9, 10, 11, 12, 13), []) { Scheduling = "normal", Compiled = compiled }.ToJson();
+        using var doc = System.Text.Json.JsonDocument.Parse(json);
+        var root = doc.RootElement.GetProperty("compiled_after_start");
+
+        Assert.Equal(["loop_thread", "bus_thread"], root.EnumerateObject().Select(p => p.Name));
+        Assert.Equal(1, root.GetProperty("loop_thread").GetProperty("methods").GetInt64());
+        Assert.Equal(0.03, root.GetProperty("loop_thread").GetProperty("ms").GetDouble());
+        Assert.Equal(14, root.GetProperty("bus_thread").GetProperty("methods").GetInt64());
+        Assert.Equal(1.15, root.GetProperty("bus_thread").GetProperty("ms").GetDouble());
+        Assert.Equal("loop thread 1 method (0.03 ms), bus thread 14 methods (1.15 ms)", compiled.Summary);
+    }
+
+    [Fact]
     public void Fault_injection_text_is_parsed_and_checked()
     {
         var inject = FaultInjection.Parse("ber=1e-5, reset=right.shoulder@5s,reset=12@750ms");

@@ -19,6 +19,43 @@ public sealed class ControlLoopTests
         }
     }
 
+    /// <summary>Calls, at one tick, a generic method over value types nothing else uses: new code for the JIT, on the calling thread.</summary>
+    private sealed class LateFirstCall(string name, long atTick) : Plugin(PluginContext.Standalone(name))
+    {
+        private readonly struct A;
+
+        private readonly struct B;
+
+        private readonly struct C;
+
+        public override void Tick(in TickContext context)
+        {
+            if (context.Index == atTick)
+            {
+                _ = Fresh(default(A)).GetHashCode() + Fresh(default(B)).GetHashCode() + Fresh(default(C)).GetHashCode();
+            }
+        }
+
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static T Fresh<T>(T value) => value;
+    }
+
+    [Fact]
+    public void Code_first_run_after_the_first_tick_is_counted_as_compiled_on_the_loop_thread()
+    {
+        var graph = new PluginGraph();
+        graph.Add(new LateFirstCall("late", atTick: 20));
+        using var loop = new ControlLoop(graph.Compile(), TimeProvider.System, 1000);
+
+        loop.Start();
+        SpinWait.SpinUntil(() => loop.TickCount >= 40, TimeSpan.FromSeconds(30));
+        loop.Stop();
+
+        Assert.Null(loop.ThreadFailure);
+        Assert.True(loop.MethodsCompiledAfterFirstTick >= 3, $"{loop.MethodsCompiledAfterFirstTick} methods");
+        Assert.True(loop.CompileTimeAfterFirstTick > TimeSpan.Zero);
+    }
+
     [Fact]
     public void Stepped_on_a_virtual_clock_the_loop_ticks_once_per_period_with_loop_time_and_no_misses()
     {

@@ -42,6 +42,11 @@ internal static class RunEnd
             output.WriteLine($"  threads: {scheduling}");
         }
 
+        if (result.Compiled is { } compiled)
+        {
+            output.WriteLine($"  compiled after start: {compiled.Summary}");
+        }
+
         if (result.Stop is { } stop)
         {
             TellStop(stop, output, error);

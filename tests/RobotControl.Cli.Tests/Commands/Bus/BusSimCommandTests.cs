@@ -34,6 +34,6 @@ public sealed class BusSimCommandTests
         sim.WaitFor("serving", Patience);
         sim.Signal("TERM");
         Assert.Equal(0, sim.WaitForExit(Patience));
-        Assert.Matches(@"stopped after [0-9.]+ s simulated: \d+ ms slipped behind real time, longest stall [0-9.]+ ms at [0-9.]+ s \(process CPU in it [0-9.]+ ms\), \d+ collections", sim.Output);
+        Assert.Matches(@"stopped after [0-9.]+ s simulated: \d+ ms slipped behind real time, longest stall [0-9.]+ ms at [0-9.]+ s \(process CPU in it [0-9.]+ ms\), compiled while serving \d+ methods \([0-9.]+ ms\), \d+ collections", sim.Output);
     }
 }
