@@ -145,4 +145,13 @@ static inline uint16_t write_kp_twice_newest_slot(rcfw_bus *bus)
     return q1 > q0 ? RCFW_FRAM_PARAMS_B : RCFW_FRAM_PARAMS_A;
 }
 
+/* A bus of n of three modules: ids 1, 2, 3 with 4, 2 and 2 motors. */
+static inline rcfw_bus *make_bus(int n)
+{
+    const uint8_t ids[3] = {1, 2, 3}, motors[3] = {4, 2, 2};
+    rcfw_bus *bus = rcfw_bus_create(n, ids, motors);
+    CHECK(bus != NULL);
+    return bus;
+}
+
 #endif
