@@ -1,55 +1,10 @@
-/* Host port: N firmware modules on one simulated RS-485 bus in simulated time. */
-#include "rcfw_host.h"
+/* Host port: N firmware modules on one simulated RS-485 bus in simulated time (the modules' HAL, the bus, time;
+ * what the simulation around them sets and reads is in rcfw_host_io.c). */
+#include "host_bus.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include "rcfw/hal.h"
-#include "rcfw/module.h"
-
-#define TICK_US (1000000u / RCFW_CONTROL_RATE_HZ)
-
-struct rcfw_port {
-    rcfw_bus *bus;
-    int32_t index;
-    uint8_t n_motors;
-    uint8_t powered;
-    uint8_t hall[RCFW_HOST_MAX_MOTORS];
-    uint16_t current[RCFW_HOST_MAX_MOTORS];
-    uint16_t pot[RCFW_HOST_MAX_MOTORS];
-    int16_t pwm[RCFW_HOST_MAX_MOTORS];
-    uint8_t bridge[RCFW_HOST_MAX_MOTORS];
-    uint32_t uart_bps;
-    uint64_t rx_end_ns;   /* end of the last received byte */
-    uint64_t tx_start_ns; /* last transmission window (RS-485 DE high) */
-    uint64_t tx_end_ns;
-    int32_t cut_remaining; /* < 0: disarmed */
-    uint8_t tx_broken;     /* 1: the RS-485 driver puts nothing on the line (a broken transmit line) */
-    uint8_t echo[RCFW_TX_MAX]; /* last transmission, heard by the other modules (half-duplex bus) */
-    uint16_t echo_len;         /* 0: already heard */
-    uint64_t echo_start_ns;
-    uint64_t next_tick_us;
-    uint8_t fram[RCFW_HOST_FRAM_SIZE];
-    rcfw_module mod;
-};
-
-typedef struct {
-    uint64_t t_ns;
-    uint8_t b;
-} timed_byte;
-
-struct rcfw_bus {
-    int32_t n;
-    struct rcfw_port *ports;
-    uint32_t bps;
-    uint64_t now_us;
-    uint64_t host_busy_until_ns;
-    int32_t collisions;
-    timed_byte *q; /* sorted by t_ns */
-    int32_t q_len;
-    int32_t q_cap;
-};
 
 void rcfw_assert_failed(int line)
 {
@@ -164,7 +119,7 @@ bool rcfw_hal_fram_write(struct rcfw_port *p, uint16_t addr, const uint8_t *buf,
 }
 
 /* ---- helpers ---- */
-static struct rcfw_port *port_of(const rcfw_bus *bus, int32_t module)
+struct rcfw_port *host_port_of(const rcfw_bus *bus, int32_t module)
 {
     if (!bus || module < 0 || module >= bus->n) {
         return NULL;
@@ -172,7 +127,7 @@ static struct rcfw_port *port_of(const rcfw_bus *bus, int32_t module)
     return &bus->ports[module];
 }
 
-static void boot(struct rcfw_port *p, uint8_t cause)
+void host_boot(struct rcfw_port *p, uint8_t cause)
 {
     p->powered = 1;
     memset(p->pwm, 0, sizeof p->pwm);
@@ -216,7 +171,7 @@ rcfw_bus *rcfw_bus_create(int32_t n_modules, const uint8_t *ids, const uint8_t *
         p->n_motors = motors_per_module[i];
         p->cut_remaining = -1;
         memset(p->hall, 1, sizeof p->hall);
-        boot(p, RCFW_RESET_POWER_ON);
+        host_boot(p, RCFW_RESET_POWER_ON);
         /* factory image: the module's ID, then a clean error state */
         uint8_t zero = 0;
         (void)rcfw_module_write(&p->mod, RCFW_CT_ID, &ids[i], 1);
@@ -244,9 +199,9 @@ int32_t rcfw_bus_set_baud(rcfw_bus *bus, uint32_t bps)
     return RCFW_HOST_OK;
 }
 
-static int32_t check_motor(const rcfw_bus *bus, int32_t module, int32_t motor, struct rcfw_port **out)
+int32_t host_check_motor(const rcfw_bus *bus, int32_t module, int32_t motor, struct rcfw_port **out)
 {
-    struct rcfw_port *p = port_of(bus, module);
+    struct rcfw_port *p = host_port_of(bus, module);
     if (!p || motor < 0 || motor >= p->n_motors) {
         return RCFW_HOST_EARG;
     }
@@ -254,44 +209,11 @@ static int32_t check_motor(const rcfw_bus *bus, int32_t module, int32_t motor, s
     return RCFW_HOST_OK;
 }
 
-int32_t rcfw_set_hall(rcfw_bus *bus, int32_t module, int32_t motor, uint8_t state)
-{
-    struct rcfw_port *p;
-    if (check_motor(bus, module, motor, &p) != RCFW_HOST_OK || state > 7u) {
-        return RCFW_HOST_EARG;
-    }
-    p->hall[motor] = state;
-    if (p->powered) {
-        rcfw_module_hall_edge(&p->mod, (uint8_t)motor);
-    }
-    return RCFW_HOST_OK;
-}
-
-int32_t rcfw_set_current_raw(rcfw_bus *bus, int32_t module, int32_t motor, uint16_t raw)
-{
-    struct rcfw_port *p;
-    if (check_motor(bus, module, motor, &p) != RCFW_HOST_OK || raw > 4095u) {
-        return RCFW_HOST_EARG;
-    }
-    p->current[motor] = raw;
-    return RCFW_HOST_OK;
-}
-
-int32_t rcfw_set_pot_raw(rcfw_bus *bus, int32_t module, int32_t motor, uint16_t raw)
-{
-    struct rcfw_port *p;
-    if (check_motor(bus, module, motor, &p) != RCFW_HOST_OK || raw > 4095u) {
-        return RCFW_HOST_EARG;
-    }
-    p->pot[motor] = raw;
-    return RCFW_HOST_OK;
-}
-
 static void after_bus_activity(struct rcfw_port *p)
 {
     if (p->powered && rcfw_module_take_reboot(&p->mod)) {
         uint64_t tx_end = p->tx_end_ns, tx_start = p->tx_start_ns;
-        boot(p, RCFW_CAUSE_SOFTWARE);
+        host_boot(p, RCFW_CAUSE_SOFTWARE);
         p->tx_end_ns = tx_end; /* the reply already on the line stays there */
         p->tx_start_ns = tx_start;
     }
@@ -417,129 +339,3 @@ int32_t rcfw_bus_pending(const rcfw_bus *bus)
 }
 
 int32_t rcfw_bus_collisions(const rcfw_bus *bus) { return bus ? bus->collisions : RCFW_HOST_EARG; }
-
-int32_t rcfw_get_pwm(const rcfw_bus *bus, int32_t module, int32_t motor)
-{
-    struct rcfw_port *p;
-    if (check_motor(bus, module, motor, &p) != RCFW_HOST_OK) {
-        return RCFW_HOST_EARG;
-    }
-    return p->bridge[motor] ? p->pwm[motor] : 0;
-}
-
-int32_t rcfw_get_driver_enable(const rcfw_bus *bus, int32_t module, int32_t motor)
-{
-    struct rcfw_port *p;
-    if (check_motor(bus, module, motor, &p) != RCFW_HOST_OK) {
-        return RCFW_HOST_EARG;
-    }
-    return p->bridge[motor];
-}
-
-int32_t rcfw_get_tx_enable(const rcfw_bus *bus, int32_t module)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p) {
-        return RCFW_HOST_EARG;
-    }
-    uint64_t now_ns = bus->now_us * 1000u;
-    return p->powered && now_ns >= p->tx_start_ns && now_ns < p->tx_end_ns;
-}
-
-int32_t rcfw_get_position(const rcfw_bus *bus, int32_t module, int32_t motor)
-{
-    struct rcfw_port *p;
-    if (check_motor(bus, module, motor, &p) != RCFW_HOST_OK) {
-        return RCFW_HOST_EARG;
-    }
-    return p->mod.motor[motor].position;
-}
-
-int32_t rcfw_peek_table(const rcfw_bus *bus, int32_t module, uint16_t addr, uint8_t *buf, int32_t len)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p || len < 0 || (uint32_t)addr + (uint32_t)len > RCFW_CT_SIZE || (len > 0 && !buf)) {
-        return RCFW_HOST_EARG;
-    }
-    memcpy(buf, p->mod.ct + addr, (size_t)len);
-    return len;
-}
-
-int32_t rcfw_set_tx_broken(rcfw_bus *bus, int32_t module, int32_t broken)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p) {
-        return RCFW_HOST_EARG;
-    }
-    p->tx_broken = broken != 0 ? 1u : 0u;
-    return RCFW_HOST_OK;
-}
-
-int32_t rcfw_table_write(rcfw_bus *bus, int32_t module, uint16_t addr, const uint8_t *buf, int32_t len)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p || len <= 0 || len > 0xFFFF || !buf) {
-        return RCFW_HOST_EARG;
-    }
-    return rcfw_module_write(&p->mod, addr, buf, (uint16_t)len);
-}
-
-int32_t rcfw_is_powered(const rcfw_bus *bus, int32_t module)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    return p ? p->powered : RCFW_HOST_EARG;
-}
-
-int32_t rcfw_power_cycle(rcfw_bus *bus, int32_t module)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p) {
-        return RCFW_HOST_EARG;
-    }
-    p->cut_remaining = -1;
-    boot(p, RCFW_RESET_POWER_ON);
-    return RCFW_HOST_OK;
-}
-
-int32_t rcfw_reset(rcfw_bus *bus, int32_t module, uint8_t cause)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p || cause < RCFW_RESET_POWER_ON || cause > RCFW_RESET_LOCKUP) {
-        return RCFW_HOST_EARG;
-    }
-    if (!p->powered) {
-        return RCFW_HOST_EPOWER;
-    }
-    boot(p, cause);
-    return RCFW_HOST_OK;
-}
-
-int32_t rcfw_fram_cut_after(rcfw_bus *bus, int32_t module, int32_t n_bytes)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p) {
-        return RCFW_HOST_EARG;
-    }
-    p->cut_remaining = n_bytes < 0 ? -1 : n_bytes;
-    return RCFW_HOST_OK;
-}
-
-int32_t rcfw_fram_peek(const rcfw_bus *bus, int32_t module, uint16_t addr, uint8_t *buf, int32_t len)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p || len < 0 || (uint32_t)addr + (uint32_t)len > RCFW_HOST_FRAM_SIZE || (len > 0 && !buf)) {
-        return RCFW_HOST_EARG;
-    }
-    memcpy(buf, p->fram + addr, (size_t)len);
-    return len;
-}
-
-int32_t rcfw_fram_poke(rcfw_bus *bus, int32_t module, uint16_t addr, const uint8_t *buf, int32_t len)
-{
-    struct rcfw_port *p = port_of(bus, module);
-    if (!p || len < 0 || (uint32_t)addr + (uint32_t)len > RCFW_HOST_FRAM_SIZE || (len > 0 && !buf)) {
-        return RCFW_HOST_EARG;
-    }
-    memcpy(p->fram + addr, buf, (size_t)len);
-    return len;
-}
