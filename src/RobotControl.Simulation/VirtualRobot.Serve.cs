@@ -28,17 +28,11 @@ public sealed unsafe partial class VirtualRobot
         var pty = port as PseudoTerminal;
         var last = start;
         var lastCpu = Environment.CpuUsage.TotalTime;
-        var compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true);
-        var compileTime = JitInfo.GetCompilationTime(currentThread: true);
-        var turns = 0L;
+        var afterFirstTurn = false;
+        var compiledMethods = 0L;
+        var compileTime = TimeSpan.Zero;
         while (!cancellationToken.IsCancellationRequested)
         {
-            if (++turns == 2)
-            {
-                compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true); // after the first turn
-                compileTime = JitInfo.GetCompilationTime(currentThread: true);
-            }
-
             var now = System.Diagnostics.Stopwatch.GetTimestamp();
             var cpu = Environment.CpuUsage.TotalTime;
             if (now - last > LongestServeGap.Ticks * System.Diagnostics.Stopwatch.Frequency / TimeSpan.TicksPerSecond)
@@ -85,10 +79,19 @@ public sealed unsafe partial class VirtualRobot
                 }
             }
             while (_nowUs < wall && !cancellationToken.IsCancellationRequested);
+            if (!afterFirstTurn)
+            {
+                afterFirstTurn = true;
+                compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true);
+                compileTime = JitInfo.GetCompilationTime(currentThread: true);
+            }
         }
 
-        MethodsCompiledWhileServing = JitInfo.GetCompiledMethodCount(currentThread: true) - compiledMethods;
-        CompileTimeWhileServing = JitInfo.GetCompilationTime(currentThread: true) - compileTime;
+        if (afterFirstTurn)
+        {
+            MethodsCompiledWhileServing = JitInfo.GetCompiledMethodCount(currentThread: true) - compiledMethods;
+            CompileTimeWhileServing = JitInfo.GetCompilationTime(currentThread: true) - compileTime;
+        }
     }
 
     /// <summary>The baud the simulated line runs at now (it follows the client's pty setting when served on a pty).</summary>
@@ -112,15 +115,15 @@ public sealed unsafe partial class VirtualRobot
     /// </summary>
     public TimeSpan LongestServeGap { get; private set; }
 
-    /// <summary>Methods the JIT compiled on the serving thread after its first turn of <see cref="Serve"/>; known once it has returned.</summary>
-    public long MethodsCompiledWhileServing { get; private set; }
-
-    /// <summary>Time the serving thread spent in the JIT after its first turn (see <see cref="MethodsCompiledWhileServing"/>).</summary>
-    public TimeSpan CompileTimeWhileServing { get; private set; }
-
     /// <summary>When the <see cref="LongestServeGap"/> began, wall-clock time after serving started.</summary>
     public TimeSpan LongestServeGapAt { get; private set; }
 
     /// <summary>CPU time the process used during the <see cref="LongestServeGap"/>: about the gap, it was busy; about 0, it was not running.</summary>
     public TimeSpan LongestServeGapCpu { get; private set; }
+
+    /// <summary>Methods the JIT compiled on the serving thread after its first turn of <see cref="Serve"/>; known once it has returned.</summary>
+    public long MethodsCompiledWhileServing { get; private set; }
+
+    /// <summary>Time the serving thread spent in the JIT after its first turn (see <see cref="MethodsCompiledWhileServing"/>).</summary>
+    public TimeSpan CompileTimeWhileServing { get; private set; }
 }

@@ -172,10 +172,11 @@ public sealed class RobotSession : IDisposable
 
     /// <summary>
     /// Starts the bus thread and the loop thread (real bus, wall clock). The motors are still off: the code of the
-    /// graph and the cycle is compiled first (<see cref="CodeWarmUp"/>), the bus cycle is run for <see cref="WarmUp"/> on this thread, and the stop's torque-off and read-back once (every path
-    /// JIT-compiled, buffers touched), so that the
-    /// modules' bus watchdogs are armed only when the cycle runs at rate; then the motors go on (watchdogs armed) and
-    /// the threads start straight away, with <paramref name="threads"/>' scheduling (priority, CPUs).
+    /// graph and the cycle is compiled first (<see cref="PrepareRealtime"/>), then the bus cycle is run for
+    /// <see cref="WarmUp"/> on this thread, and the stop's torque-off and read-back once (every path JIT-compiled,
+    /// buffers touched), so that the modules' bus watchdogs are armed only when the cycle runs at rate; then the motors
+    /// go on (watchdogs armed) and the threads start straight away, with <paramref name="threads"/>' scheduling
+    /// (priority, CPUs).
     /// </summary>
     /// <exception cref="InvalidOperationException">The session is virtual, or already running.</exception>
     /// <exception cref="IOException">A module refuses torque (e.g. a latched watchdog error).</exception>

@@ -11,12 +11,10 @@ namespace RobotControl.Cli.Tests.Commands.Run;
 [Collection(RunProcess.Collection)]
 public sealed class RealtimeRunTests
 {
-    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(90);
-
     [Fact]
     public void A_wall_clock_run_on_a_pty_finds_the_modules_moves_the_arms_and_writes_its_report()
     {
-        using var sim = new SimulatorProcess(Patience);
+        using var sim = new SimulatorProcess(RunProcess.Patience);
         var transport = sim.Transport;
         var before = Positions(sim);
         var report = Path.Combine(Directory.CreateTempSubdirectory("rcrt").FullName, "report.json");
@@ -24,7 +22,7 @@ public sealed class RealtimeRunTests
         // --continue-on-fault: a loaded machine may starve the simulator process; the path is what is tested here.
         using (var run = new RunProcess("run", RunProcess.Graph, "--transport", transport, "--duration", "3s", "--continue-on-fault", "--report", report))
         {
-            var code = run.WaitForExit(Patience);
+            var code = run.WaitForExit(RunProcess.Patience);
             Assert.True(code is 0 or 1, run.Output); // 1: deadline misses or trips on a loaded machine; 2 would be a refusal
             Assert.Contains("real time", run.Output, StringComparison.Ordinal);
             Assert.Contains("compiled after start: loop thread ", run.Output, StringComparison.Ordinal);

@@ -9,17 +9,15 @@ namespace RobotControl.Cli.Tests.Commands.Run;
 [Collection(RunProcess.Collection)]
 public sealed class RunInterruptTests
 {
-    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(90);
-
     [Fact]
     public void Ctrl_C_on_the_virtual_robot_stops_switches_torque_off_and_writes_an_interrupted_report()
     {
         var report = Path.Combine(Directory.CreateTempSubdirectory("rcrun").FullName, "report.json");
         using (var run = new RunProcess("run", RunProcess.Graph, "--virtual", "--duration", "10m", "--report", report))
         {
-            run.WaitFor("t=", Patience);
+            run.WaitFor("t=", RunProcess.Patience);
             run.Signal("INT");
-            Assert.Equal(130, run.WaitForExit(Patience));
+            Assert.Equal(130, run.WaitForExit(RunProcess.Patience));
             Assert.Contains("SIGINT: stopping", run.Output, StringComparison.Ordinal);
         }
 
@@ -29,7 +27,7 @@ public sealed class RunInterruptTests
     [Fact]
     public void Ctrl_C_on_a_pty_bus_leaves_every_module_torque_off_without_a_latched_watchdog_and_the_next_run_starts()
     {
-        using var sim = new SimulatorProcess(Patience);
+        using var sim = new SimulatorProcess(RunProcess.Patience);
         var transport = sim.Transport;
         var dir = Directory.CreateTempSubdirectory("rcrun").FullName;
         var report = Path.Combine(dir, "report.json");
@@ -37,10 +35,10 @@ public sealed class RunInterruptTests
         // stop is what is tested here, so the run must still be running when the signal comes.
         using (var run = new RunProcess("run", RunProcess.Graph, "--transport", transport, "--duration", "10m", "--continue-on-fault", "--report", report))
         {
-            run.WaitFor("t=", Patience);
+            run.WaitFor("t=", RunProcess.Patience);
             Thread.Sleep(1000); // let the wall-clock loop run a while
             run.Signal("INT");
-            Assert.Equal(130, run.WaitForExit(Patience));
+            Assert.Equal(130, run.WaitForExit(RunProcess.Patience));
         }
 
         using (var stopped = JsonDocument.Parse(File.ReadAllText(report)))
@@ -53,7 +51,7 @@ public sealed class RunInterruptTests
                 // The machine stalled the run (or the simulator) past the watchdog before the signal: that latch is
                 // the modules doing their job mid-run, not the stop's. Clear it deliberately, as a user would.
                 using var clear = new RunProcess("discover", transport, "--robot", SimulatorProcess.RobotFile, "--clear-faults");
-                clear.WaitForExit(Patience);
+                clear.WaitForExit(RunProcess.Patience);
                 Assert.Contains("cleared the latched errors", clear.Output, StringComparison.Ordinal);
             }
         }
@@ -62,7 +60,7 @@ public sealed class RunInterruptTests
         var next = Path.Combine(dir, "next.json");
         using (var run = new RunProcess("run", RunProcess.Graph, "--transport", transport, "--duration", "1s", "--report", next))
         {
-            var code = run.WaitForExit(Patience);
+            var code = run.WaitForExit(RunProcess.Patience);
             Assert.True(code is 0 or 1, run.Output); // 1: deadline misses on a loaded machine; 2 would be a refusal to start
         }
 

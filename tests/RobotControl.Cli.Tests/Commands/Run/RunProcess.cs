@@ -9,6 +9,9 @@ internal sealed class RunProcess : IDisposable
     /// <summary>The test collection of every test that runs a robot in real time: one at a time, on a shared machine.</summary>
     public const string Collection = "real-time runs";
 
+    /// <summary>How long a test waits for a child robotctl to say something or to exit, on a shared, loaded machine.</summary>
+    public static readonly TimeSpan Patience = TimeSpan.FromSeconds(90);
+
     private readonly Process _process;
     private readonly StringBuilder _output = new();
 

@@ -10,18 +10,16 @@ namespace RobotControl.Cli.Tests.Commands.WebConsole;
 [Collection(RunProcess.Collection)]
 public sealed class ConsoleStopTests
 {
-    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(90);
-
     [Fact]
     public void Ctrl_C_on_the_virtual_robot_switches_torque_off_reads_it_back_and_writes_the_report()
     {
         var report = Path.Combine(Directory.CreateTempSubdirectory("rcconsole").FullName, "session.json");
         using (var console = new RunProcess("console", RunProcess.Graph, "--virtual", "--bind", "127.0.0.1:0", "--report", report))
         {
-            console.WaitFor("Ctrl+C stops", Patience);
+            console.WaitFor("Ctrl+C stops", RunProcess.Patience);
             Thread.Sleep(500); // the session runs a while
             console.Signal("INT");
-            Assert.Equal(0, console.WaitForExit(Patience));
+            Assert.Equal(0, console.WaitForExit(RunProcess.Patience));
             Assert.Contains("SIGINT: stopping", console.Output, StringComparison.Ordinal);
             Assert.Contains("stop: torque off on all 6 modules (read back)", console.Output, StringComparison.Ordinal);
             Assert.Contains($"report: {report}", console.Output, StringComparison.Ordinal);
@@ -46,14 +44,14 @@ public sealed class ConsoleStopTests
     [Fact]
     public void SIGTERM_on_a_pty_bus_with_real_time_threads_leaves_every_module_torque_off_as_read_back_independently()
     {
-        using var sim = new SimulatorProcess(Patience);
+        using var sim = new SimulatorProcess(RunProcess.Patience);
         var report = Path.Combine(Directory.CreateTempSubdirectory("rcconsole").FullName, "session.json");
         using (var console = new RunProcess("console", RunProcess.Graph, "--transport", sim.Transport, "--bind", "127.0.0.1:0", "--report", report, "--rt-priority", "80"))
         {
-            console.WaitFor("Ctrl+C stops", Patience);
+            console.WaitFor("Ctrl+C stops", RunProcess.Patience);
             Thread.Sleep(1000); // the wall-clock loop and the bus thread run a while
             console.Signal("TERM");
-            Assert.Equal(0, console.WaitForExit(Patience));
+            Assert.Equal(0, console.WaitForExit(RunProcess.Patience));
             Assert.Contains("SIGTERM: stopping", console.Output, StringComparison.Ordinal);
             Assert.Contains("stop: torque off on all 6 modules (read back)", console.Output, StringComparison.Ordinal);
         }
