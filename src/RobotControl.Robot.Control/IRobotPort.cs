@@ -36,37 +36,30 @@ public interface IRobotPort
 
     /// <summary>Commands every motor to hold where it is (used when a plug-in faults or a value is invalid).</summary>
     void HoldPosition();
+}
 
+/// <summary>
+/// The operator as the control loop reports it to a safety supervisor, straight, with no mailbox in the robot layer:
+/// how old each arm's input device data is (the master timeout), the teleoperation pedal and the emergency-stop pedal
+/// or button; and whether teleoperation may drive the arms now. Called by the loop's thread every tick; every member
+/// is non-blocking and allocation-free.
+/// </summary>
+public interface IOperatorPort
+{
     /// <summary>
-    /// True while teleoperation may drive the arms (a safety supervisor's run level, e.g. pedal down); false while the
-    /// robot holds (a trip, pedal up, homing): the graph then zeroes the haptic handles' forces. A port without a
-    /// supervisor always allows it.
+    /// True while teleoperation may drive the arms (a run level such as pedal down); false while the robot holds (a
+    /// trip, pedal up, homing): the graph then zeroes the haptic handles' forces.
     /// </summary>
-    bool TeleopAllowed => true;
+    bool TeleopAllowed { get; }
 
-    /// <summary>
-    /// Tells the port how old the input device data driving <paramref name="arm"/> is, ms (the master timeout: a
-    /// safety supervisor holds the arms when it is too old). A port without a supervisor ignores it.
-    /// </summary>
-    void ReportInputAge(int arm, double ageMs)
-    {
-    }
+    /// <summary>How old the input device data driving <paramref name="arm"/> is, ms (NaN: unknown, taken as too old).</summary>
+    void ReportInputAge(int arm, double ageMs);
 
-    /// <summary>
-    /// Tells the port the operator's teleoperation pedal state (called every tick only when the graph wires a pedal):
-    /// a safety supervisor moves PEDAL_UP / PEDAL_DOWN with it. A port without a supervisor ignores it.
-    /// </summary>
-    void ReportPedal(bool down)
-    {
-    }
+    /// <summary>The teleoperation pedal (called every tick only when the graph wires one).</summary>
+    void ReportPedal(bool down);
 
-    /// <summary>
-    /// Tells the port whether the operator's emergency-stop pedal or button is pressed (called every tick only when the
-    /// graph wires one): a safety supervisor goes to E-STOP when it is pressed. A port without a supervisor ignores it.
-    /// </summary>
-    void ReportEmergencyStop(bool pressed)
-    {
-    }
+    /// <summary>Whether the emergency-stop pedal or button is pressed (called every tick only when the graph wires one).</summary>
+    void ReportEmergencyStop(bool pressed);
 }
 
 /// <summary>Robot-level fault flags, surfaced in the graph as an output.</summary>

@@ -38,6 +38,7 @@ public sealed partial class BusClient : IDisposable
     private long _lateReplies;
     private long _quietUntil;
     private long _wireFreeAt;
+    private BusInterruption? _interruption;
 
     /// <summary>
     /// Creates a client on <paramref name="link"/> (owned and disposed by the client), timing on the link's own clock
@@ -62,6 +63,16 @@ public sealed partial class BusClient : IDisposable
         }
 
         ByteTime = TimeSpan.FromTicks(Math.Max(1, 10 * TimeSpan.TicksPerSecond / link.BaudRate));
+    }
+
+    /// <summary>
+    /// While set and raised, the next frame is not sent: <see cref="BusWorkInterruptedException"/> is thrown instead
+    /// (set by the bus's owner around work that may be cut short; null: nothing interrupts).
+    /// </summary>
+    public BusInterruption? Interruption
+    {
+        get => Volatile.Read(ref _interruption);
+        set => Volatile.Write(ref _interruption, value);
     }
 
     /// <summary>The link the client talks through.</summary>
@@ -362,6 +373,11 @@ public sealed partial class BusClient : IDisposable
     {
         // Anything received before the request answers an earlier one: drain it (counting the late replies in it)
         // so that it cannot be taken for the answer to this request.
+        if (_interruption is { IsRaised: true } interruption)
+        {
+            throw new BusWorkInterruptedException(interruption.Reason ?? "interrupted");
+        }
+
         DrainLate();
         var n = FrameEncoder.EncodeInstruction(_tx, id, instruction, parameters);
 

@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using RobotControl.Modules;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
@@ -22,7 +23,11 @@ public sealed partial class HeadlessSession
         }
 
         var lines = LogDiscovery(_bus.Discover());
-        ReadAllParameters();
+        foreach (var c in _bus.Controllers.Where(c => c.Present))
+        {
+            _pendingReads.Enqueue(c); // read on the status thread's next turns, one module per piece of work
+        }
+
         return CommandResult.Ok($"{_found} of {_bus.Controllers.Count} modules found", lines);
     });
 
@@ -78,7 +83,7 @@ public sealed partial class HeadlessSession
                 return refused;
             }
 
-            var reply = _bus.Client.Reboot(c.Id);
+            var reply = _bus.Reboot(c.Id);
             if (reply.Outcome != ReplyOutcome.Ok)
             {
                 return CommandResult.Fail(CommandOutcome.Failed, $"module {c.Id}: no reply to the reboot ({reply.Outcome})");
@@ -261,13 +266,27 @@ public sealed partial class HeadlessSession
         return CommandResult.Ok("pedal down: the arms follow the graph and the console's jogs (run level PEDAL_DOWN)");
     });
 
+    /// <summary>How long an emergency stop's caller waits to see the run level at E_STOP before it is told it is not yet.</summary>
+    private static readonly TimeSpan EmergencyStopConfirmation = TimeSpan.FromSeconds(1);
+
     /// <inheritdoc />
-    public Task<CommandResult> EmergencyStopAsync() => _commands.Submit(() =>
+    /// <remarks>
+    /// Not a queued command: the supervisor's emergency stop is lock-free from this thread and overtakes any queued
+    /// work; the result says when the run level is E_STOP (the hold or the motors off is then on the wire).
+    /// </remarks>
+    public async Task<CommandResult> EmergencyStopAsync()
     {
         _supervisor.EmergencyStop("console", "operator's emergency stop on the console");
-        LogSupervisor();
-        return CommandResult.Ok($"emergency stop: run level {_supervisor.Level.Name()}; clear faults to reset");
-    });
+        var waited = Stopwatch.StartNew();
+        while (_supervisor.Level != RunLevel.EStop && waited.Elapsed < EmergencyStopConfirmation)
+        {
+            await Task.Delay(1).ConfigureAwait(false);
+        }
+
+        return _supervisor.Level == RunLevel.EStop
+            ? CommandResult.Ok($"emergency stop: run level {_supervisor.Level.Name()}; clear faults to reset")
+            : CommandResult.Fail(CommandOutcome.Failed, $"emergency stop asked for; the run level is still {_supervisor.Level.Name()} after {EmergencyStopConfirmation.TotalSeconds:0} s: the bus cycle is not running ({_state})");
+    }
 
     /// <inheritdoc />
     public Task<CommandResult> HomeAsync(string? motor)
@@ -285,7 +304,7 @@ public sealed partial class HeadlessSession
                 return CommandResult.Fail(CommandOutcome.Refused, $"homing needs the motors off at run level INIT, it is {_supervisor.Level.Name()}: {(_supervisor.Level == RunLevel.EStop ? "clear faults (reset) first" : "turn torque off first")} (a driven motor must not change coordinates)");
             }
 
-            var results = only is null ? _bus.Home() : [HomeOne(only)];
+            var results = only is null ? _bus.Home() : [_bus.HomeMotor(only)];
             var lines = results.Select(r => r.ToString()).ToList();
             foreach (var line in lines)
             {
@@ -350,24 +369,4 @@ public sealed partial class HeadlessSession
     private RobotController? FindController(int id) => _bus.Controllers.FirstOrDefault(c => c.Id == id);
 
     private RobotMotor? FindMotor(string? name) => _bus.Motors.FirstOrDefault(m => m.Config.FullName == name);
-
-    /// <summary>Homes one motor: its module's home request for that channel alone, then the position read back.</summary>
-    private HomingResult HomeOne(RobotMotor m)
-    {
-        var c = m.Controller;
-        var ch = m.Config.Channel;
-        var reply = _bus.Client.Write(c.Id, ControlTable.Firmware["home_request"].At(0), [(byte)(1 << ch)]);
-        var position = _bus.ReadParameter(c.Id, "present_position", ch);
-        var errors = (HardwareErrors)_bus.ReadParameter(c.Id, "motor_error", ch);
-        var pot = (int)_bus.ReadParameter(c.Id, "pot_raw", ch);
-        var rad = m.Config.ToRadians(position);
-        var outcome = reply.Outcome != ReplyOutcome.Ok ? HomingOutcome.NoReply : !reply.Succeeded ? HomingOutcome.Refused : HomingOutcome.Homed;
-        var detail = outcome switch
-        {
-            HomingOutcome.NoReply => $"the home request got no valid reply ({reply.Outcome})",
-            HomingOutcome.Refused => $"the module refused the home request (error 0x{reply.Error & 0x7F:X2}): torque on, or no pot calibration?",
-            _ => string.Empty,
-        };
-        return new HomingResult(m, outcome, pot, double.NaN, rad, errors, detail);
-    }
 }

@@ -1,36 +1,54 @@
 using RobotControl.Robot.Bus;
+using RobotControl.WebConsole.Session;
 
 namespace RobotControl.WebConsole.Adapter;
 
-/// <summary>The session thread's module work between bus cycles: each module's parameters once, then status polls in turn.</summary>
+/// <summary>The modules' parameters as the bus page shows them: read once per module, between bus cycles, one module at a time.</summary>
 public sealed partial class HeadlessSession
 {
     /// <summary>
-    /// Reads a module's parameters; when the module does not answer (noise, a reset, a module gone silent), the read is
-    /// tried again on a later turn, up to <see cref="ParameterReadTries"/> times, and the event log says so. A module
-    /// that never answers leaves its parameters unknown; the session goes on.
+    /// The status thread's turn: when no read is under way, the next module waiting has its parameters read between
+    /// bus cycles (a piece of work of its own, so a cycle waits for one module's reads at most). A module that does not
+    /// answer (noise, a reset, a module gone silent) is tried again on a later turn, up to
+    /// <see cref="ParameterReadTries"/> times, and the event log says so; after that its parameters stay unknown and
+    /// the session goes on.
     /// </summary>
-    private void TryReadParameters(RobotController c)
+    private void ReadPendingParameters()
     {
-        try
+        if (_parameterRead is { IsCompleted: false } || !_pendingReads.TryDequeue(out var c))
+        {
+            return;
+        }
+
+        _parameterRead = _commands.Submit(() =>
         {
             ReadParameters(c);
-        }
-        catch (IOException ex)
-        {
-            var tries = _parameterTries[c.Id] = _parameterTries.GetValueOrDefault(c.Id) + 1;
-            if (tries < ParameterReadTries)
-            {
-                _pendingReads.Enqueue(c);
-                _events.Add(Now, "bus", $"{ex.Message}; reading module {c.Id}'s parameters again later (try {tries} of {ParameterReadTries})");
-            }
-            else
-            {
-                _events.Add(Now, "bus", $"{ex.Message}; module {c.Id}'s parameters stay unknown after {tries} tries (reload them from the bus page)");
-            }
-        }
+            return CommandResult.Ok($"module {c.Id}: parameters read");
+        }).ContinueWith(t => ParametersRead(c, t.Result), TaskScheduler.Default);
     }
 
+    private CommandResult ParametersRead(RobotController c, CommandResult result)
+    {
+        if (result.Succeeded)
+        {
+            return result;
+        }
+
+        var tries = _parameterTries[c.Id] = _parameterTries.GetValueOrDefault(c.Id) + 1;
+        if (tries < ParameterReadTries)
+        {
+            _pendingReads.Enqueue(c);
+            _events.Add(Now, "bus", $"{result.Message}; reading module {c.Id}'s parameters again later (try {tries} of {ParameterReadTries})");
+        }
+        else
+        {
+            _events.Add(Now, "bus", $"{result.Message}; module {c.Id}'s parameters stay unknown after {tries} tries (reload them from the bus page)");
+        }
+
+        return result;
+    }
+
+    /// <summary>Reads a module's parameters (the bus's owner).</summary>
     private void ReadParameters(RobotController c)
     {
         foreach (var m in c.Motors)
@@ -39,31 +57,6 @@ public sealed partial class HeadlessSession
             {
                 _parameters[(c.Id, m.Config.Channel, p.Key)] = p.FromCounts(m.Config, _bus.ReadParameter(c.Id, p.Field.Name, m.Config.Channel));
             }
-        }
-    }
-
-    /// <summary>Reads the status of the next present module (round robin).</summary>
-    private void PollNextModule()
-    {
-        var controllers = _bus.Controllers;
-        for (var n = 0; n < controllers.Count; n++)
-        {
-            var c = controllers[_pollNext++ % controllers.Count];
-            if (!c.Present)
-            {
-                continue;
-            }
-
-            try
-            {
-                _status[c.Id] = ModuleStatus.Read(_bus, c);
-            }
-            catch (IOException)
-            {
-                // A module that stops answering is reported by the bus cycles; keep its last status.
-            }
-
-            return;
         }
     }
 }

@@ -14,15 +14,20 @@ namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>
 /// The console's session: a <see cref="RobotSession"/> (graph, robot, bus, safety supervisor, control loop, brought up
-/// by the session layer) run by one thread that owns the bus. It runs the bus cycles, applies the console's queued
-/// commands between them, polls module status and publishes snapshots. On the virtual robot the session layer's
-/// <see cref="VirtualSchedule"/> ticks the loop on that thread, paced to the wall clock; on a real bus the loop runs on
-/// its own thread. The ring is fed by the loop's tick observer.
+/// by the session layer) run on the robot's one bus cycle. On the virtual robot the session layer's
+/// <see cref="VirtualSchedule"/> runs the cycles and ticks the loop on the session thread, paced to the wall clock; on a
+/// real bus the session layer's bus thread and loop thread run them (<see cref="RobotSession.StartBus"/>). The console's
+/// commands run in the robot's slot between cycles (<see cref="CommandQueue"/>); an emergency stop goes to the
+/// supervisor directly. It has no bus client of its own: what it shows of the modules is what the robot core found
+/// (status, resets, watchdog, torque read back, motor errors), published with the run status every 100 ms by a
+/// thread of its own. The ring is fed by the loop's tick observer.
 /// </summary>
 public sealed partial class HeadlessSession : IConsoleSession
 {
     private static readonly TimeSpan PublishEvery = TimeSpan.FromMilliseconds(100);
-    private static readonly TimeSpan PollEvery = TimeSpan.FromMilliseconds(200);
+
+    /// <summary>Cycles between two reads of one module's torque and motor errors (the modules in turn).</summary>
+    private const int DetailPollCycles = 50;
 
     /// <summary>How many times a module's parameters are tried before they are left unknown.</summary>
     private const int ParameterReadTries = 5;
@@ -33,28 +38,28 @@ public sealed partial class HeadlessSession : IConsoleSession
     private readonly BusRobot _bus;
     private readonly SafetySupervisor _supervisor;
     private readonly RingRecorder _recorder;
-    private readonly CommandQueue _commands = new();
+    private readonly CommandQueue _commands;
     private readonly Session.EventLog _events = new();
-    private readonly Dictionary<int, string> _names = [];
-    private readonly Dictionary<int, ModuleStatus> _status = [];
-    private readonly Dictionary<(int Module, int Channel, string Key), double> _parameters = [];
-    private readonly Queue<RobotController> _pendingReads = new();
+    private readonly RobotControl.Robot.Events.RobotEventSubscription _robotEvents;
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<int, string> _names = [];
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<(int Module, int Channel, string Key), double> _parameters = [];
+    private readonly System.Collections.Concurrent.ConcurrentQueue<RobotController> _pendingReads = new();
     private readonly Dictionary<int, int> _parameterTries = [];
     private readonly TickStatistics _busTiming = new();
-    private readonly TickStatistics _pollTiming = new();
-    private readonly TickStatistics _commandTiming = new();
     private readonly CancellationTokenSource _stop = new();
     private readonly Lock _closeLock = new();
+    private readonly Lock _logGate = new();
     private readonly Host.Realtime.RealtimeThreads _threads;
     private readonly Thread _thread;
+    private readonly Thread _publisher;
     private readonly long _begin;
+    private Task<CommandResult>? _parameterRead;
     private volatile SessionStatus _statusView;
     private volatile IReadOnlyList<ControllerView> _controllersView = [];
     private volatile string _state = "starting";
     private int _levelsLogged;
     private int _tripsLogged;
     private long _tickAllocatedBytes;
-    private int _pollNext;
     private int _found;
     private SessionEnd? _end;
 
@@ -73,13 +78,15 @@ public sealed partial class HeadlessSession : IConsoleSession
         var slot = new ObserverSlot();
         var faults = new ConsoleFaults(options.Inject, options.Virtual);
         _session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot },
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot, Robot = new BusRobotOptions { DetailPollCycles = DetailPollCycles } },
             options.Catalog);
         _robot = _session.Connection.Definition!;
         _bus = _session.Robot;
         _supervisor = _session.Supervisor;
         _clock = _session.Clock;
         _begin = _clock.GetTimestamp();
+        _commands = new CommandQueue(_bus.Slot);
+        _robotEvents = _bus.Events.Subscribe();
         try
         {
             faults.Schedule(_session.Simulation, _robot);
@@ -103,7 +110,9 @@ public sealed partial class HeadlessSession : IConsoleSession
         _statusView = BuildStatus();
         PublishControllers();
         _thread = new Thread(Run) { Name = "console session (bus)", IsBackground = true, Priority = ThreadPriority.AboveNormal };
+        _publisher = new Thread(PublishUntilStopped) { Name = "console session (status)", IsBackground = true };
         _thread.Start();
+        _publisher.Start();
     }
 
     /// <summary>The transport in use.</summary>
@@ -125,9 +134,7 @@ public sealed partial class HeadlessSession : IConsoleSession
     public IReadOnlyList<ComponentTiming> Timings =>
     [
         Timing($"control loop tick ({_session.Graph.Program.Order.Count} instances)", _session.Loop.Statistics),
-        Timing("bus cycle (sync write + sync read)", _busTiming),
-        Timing("module status poll", _pollTiming),
-        Timing("console commands", _commandTiming),
+        Timing(_session.IsVirtual ? "bus cycle (write, read, publish, check, between cycles)" : "bus cycle (timed on the virtual robot only)", _busTiming),
     ];
 
     /// <summary>The loop (benchmarks read its statistics).</summary>
@@ -146,11 +153,12 @@ public sealed partial class HeadlessSession : IConsoleSession
                 return _end;
             }
 
+            _commands.Close();
             _stop.Cancel();
             _thread.Join();
-            _commands.Close();
+            var stop = _session.Stop(); // loop and bus thread off, motors off through the robot's state machine (or written off directly), every module read back
+            _publisher.Join();
             var last = BuildStatus();
-            var stop = _session.Stop(); // loop off, motors off through the robot's state machine (or written off directly), every module read back
             _events.Add(Now, "session", $"stopped: {stop.Summary}");
             _end = new SessionEnd(last with { Session = "stopped", TorqueOn = stop.TorqueOn.Count > 0 }, stop, _events.After(0), Timings);
             return _end;
@@ -161,6 +169,7 @@ public sealed partial class HeadlessSession : IConsoleSession
     public void Dispose()
     {
         _ = Close();
+        _robotEvents.Dispose();
         _session.Dispose();
         _stop.Dispose();
     }
@@ -198,17 +207,14 @@ public sealed partial class HeadlessSession : IConsoleSession
 
     private void RunVirtual()
     {
-        // The session layer's schedule runs bus cycles and the loop ticks due on the virtual clock; between cycles
-        // the console's work runs, and the thread sleeps whenever the virtual clock gets ahead of the wall clock, so
-        // the virtual robot runs in real time.
+        // The session layer's schedule runs the robot's cycle and the loop ticks due on the virtual clock, and the
+        // work between cycles (the console's commands); the thread sleeps whenever the virtual clock gets ahead of the
+        // wall clock, so the virtual robot runs in real time.
         var wall = Stopwatch.StartNew();
-        var nextPublish = 0.0;
-        var nextPoll = 0.0;
         var cycleBegin = Stopwatch.GetTimestamp();
         _session.RunVirtual(long.MaxValue, () =>
         {
             _busTiming.Record(Stopwatch.GetTimestamp() - cycleBegin);
-            Between(ref nextPublish, ref nextPoll);
             var ahead = Now - wall.Elapsed.TotalSeconds;
             if (ahead > 0.002)
             {
@@ -227,44 +233,17 @@ public sealed partial class HeadlessSession : IConsoleSession
         Interlocked.Add(ref _tickAllocatedBytes, GC.GetAllocatedBytesForCurrentThread() - before);
     }
 
-    // Optimized once: this loop runs for the whole session, and tier-0 code would be replaced on the stack by a
-    // synchronous compile on the bus thread once it had looped long enough, with the watchdogs armed.
-    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveOptimization)]
+    /// <summary>
+    /// A real bus: the session layer starts the robot's bus thread and the loop thread, as a run does (one bus loop);
+    /// this thread waits for the stop, or for the loop to fail.
+    /// </summary>
     private void RunRealTime()
     {
-        // The loop runs on its own thread; this thread owns the bus, so the console's commands run between cycles.
-        _session.PrepareRealtime(_threads); // code compiled, wake-up latency held until the session's stop, as in a run
-        var loop = _session.Loop;
-        _threads.Start(prologue => prologue(), loop.Start); // this thread schedules itself, the loop thread its own
+        _session.StartBus(_threads); // code compiled, wake-up latency held until the session's stop, as in a run
         _events.Add(Now, "session", $"threads: {_threads.Outcome}{(_session.CpuLatency is { } latency ? "; " + latency : "")}");
-        var nextPublish = 0.0;
-        var nextPoll = 0.0;
-        try
+        var loop = _session.Loop;
+        while (!_stop.Token.WaitHandle.WaitOne(PublishEvery) && loop.ThreadFailure is null)
         {
-            while (!_stop.IsCancellationRequested && loop.ThreadFailure is null)
-            {
-                Between(ref nextPublish, ref nextPoll);
-                var begin = Stopwatch.GetTimestamp();
-                try
-                {
-                    _bus.RunCycle();
-                }
-                catch (IOException ex)
-                {
-                    _events.Add(Now, "bus", $"bus error: {ex.Message}");
-                    Thread.Sleep(10);
-                }
-
-                _busTiming.Record(Stopwatch.GetTimestamp() - begin);
-                while (Stopwatch.GetElapsedTime(begin) < TimeSpan.FromMilliseconds(1) && !_stop.IsCancellationRequested)
-                {
-                    Thread.SpinWait(50);
-                }
-            }
-        }
-        finally
-        {
-            loop.Stop();
         }
 
         if (loop.ThreadFailure is { } failure)
@@ -273,47 +252,29 @@ public sealed partial class HeadlessSession : IConsoleSession
         }
     }
 
-    /// <summary>Work between bus cycles: commands, events, status poll, snapshots.</summary>
-    private void Between(ref double nextPublish, ref double nextPoll)
+    /// <summary>The status thread: events, run levels, parameter reads and snapshots every <see cref="PublishEvery"/> until the stop.</summary>
+    private void PublishUntilStopped()
     {
-        var begin = Stopwatch.GetTimestamp();
-        if (_commands.Drain() > 0)
+        do
         {
-            _commandTiming.Record(Stopwatch.GetTimestamp() - begin);
-            PublishControllers();
+            PublishOnce();
+        }
+        while (!_stop.Token.WaitHandle.WaitOne(PublishEvery));
+
+        PublishOnce();
+    }
+
+    private void PublishOnce()
+    {
+        while (_robotEvents.TryRead(out var e))
+        {
+            _events.Add(Now, "robot", e.Message);
         }
 
-        while (_bus.Events.TryDequeue(out var line))
-        {
-            _events.Add(Now, "robot", line.Message);
-        }
-
-        // Bus work is spread over the cycles (one module's reads at a time), so no gap between two cycles grows
-        // beyond a few milliseconds while the motors are on.
-        var now = Now;
-        if (now >= nextPoll)
-        {
-            nextPoll = now + (PollEvery.TotalSeconds / Math.Max(1, _bus.Controllers.Count));
-            begin = Stopwatch.GetTimestamp();
-            if (_pendingReads.TryDequeue(out var unread))
-            {
-                TryReadParameters(unread);
-            }
-            else
-            {
-                PollNextModule();
-            }
-
-            _pollTiming.Record(Stopwatch.GetTimestamp() - begin);
-        }
-
-        if (now >= nextPublish)
-        {
-            nextPublish = now + PublishEvery.TotalSeconds;
-            LogSupervisor();
-            _statusView = BuildStatus();
-            PublishControllers();
-        }
+        LogSupervisor();
+        ReadPendingParameters();
+        _statusView = BuildStatus();
+        PublishControllers();
     }
 
     /// <summary>Logs what discovery found and returns it as lines.</summary>
@@ -326,24 +287,19 @@ public sealed partial class HeadlessSession : IConsoleSession
             _events.Add(Now, "discovery", line);
         }
 
-        while (_bus.Events.TryDequeue(out _))
-        {
-            // Discovery's findings are logged above, from the report.
-        }
-
         return lines;
-    }
-
-    private void ReadAllParameters()
-    {
-        foreach (var c in _bus.Controllers.Where(c => c.Present))
-        {
-            ReadParameters(c);
-        }
     }
 
     /// <summary>Copies the supervisor's new run-level changes and trips into the event log.</summary>
     private void LogSupervisor()
+    {
+        lock (_logGate)
+        {
+            LogSupervisorLocked();
+        }
+    }
+
+    private void LogSupervisorLocked()
     {
         var history = _supervisor.History;
         for (; _levelsLogged < history.Count; _levelsLogged++)
@@ -390,12 +346,13 @@ public sealed partial class HeadlessSession : IConsoleSession
             new BusCounters(_bus.Cycles, totals.Frames, totals.CrcErrors, totals.Timeouts, totals.Retries));
     }
 
+    /// <summary>The bus page's modules and motors, as the robot core last found them.</summary>
     private void PublishControllers()
     {
         var list = new List<ControllerView>();
         foreach (var c in _bus.Controllers)
         {
-            var status = _status.TryGetValue(c.Id, out var s) ? s : ModuleStatus.Unknown(c.Motors.Count == 0 ? 1 : c.Motors.Max(m => m.Config.Channel) + 1);
+            var status = (HardwareErrors)c.HardwareErrorStatus;
             var motors = c.Motors.Select(m => new MotorView(
                 m.Config.FullName,
                 m.Config.Name,
@@ -404,10 +361,10 @@ public sealed partial class HeadlessSession : IConsoleSession
                 m.Config.OutputMinRad * 180 / Math.PI,
                 m.Config.OutputMaxRad * 180 / Math.PI,
                 m.CurrentA,
-                status.Pwm[m.Config.Channel],
+                m.Pwm,
                 m.IsManual,
-                status.Torque[m.Config.Channel],
-                ModuleStatus.Names(status.MotorErrors[m.Config.Channel]),
+                m.TorqueReadBack ?? false,
+                m.Errors is { } errors ? Names(errors) : [],
                 [.. MotorParameter.All.Select(p =>
                 {
                     var (min, max) = p.Encodable(m.Config);
@@ -420,15 +377,23 @@ public sealed partial class HeadlessSession : IConsoleSession
                 c.Present,
                 c.ModelNumber,
                 c.FirmwareVersion,
-                ModuleStatus.Cause(status.ResetCause),
+                ResetCause(c.LastResetCause),
                 c.Resets,
-                status.WatchdogMs == 0 ? "off" : $"{status.WatchdogMs} ms{(status.Errors.HasAny(HardwareErrors.BusWatchdog) ? ", TRIPPED" : string.Empty)}",
-                ModuleStatus.Names(status.Errors),
+                c.BusWatchdogMs switch { < 0 => "not read yet", 0 => "off", var ms => $"{ms} ms" } + (status.HasAny(HardwareErrors.BusWatchdog) ? ", TRIPPED" : string.Empty),
+                Names(status),
                 motors));
         }
 
         _controllersView = list;
     }
+
+    /// <summary>Names of the set bits of <paramref name="bits"/>, as the control table names them.</summary>
+    private static string[] Names(HardwareErrors bits) => bits.IsNone ? [] : bits.ToString().Split(", ");
+
+    /// <summary>A reset cause in words, as the control table names it.</summary>
+    private static string ResetCause(int cause) =>
+        cause == 0 ? "none since connected"
+        : Bus.Protocol.ControlTable.Firmware.Codes("reset_cause").TryGetValue(cause, out var name) ? name : $"cause {cause}";
 
     /// <summary>True while the motors are driven (the robot layer is enabled).</summary>
     private bool TorqueOn => _bus.State == Robot.States.RobotState.Enabled;

@@ -5,7 +5,10 @@ using RobotControl.WebConsole.Session;
 
 namespace RobotControl.WebConsole.Server;
 
-/// <summary>The JSON API (see docs/console.md). Reads are open to every console; actions need the operator role.</summary>
+/// <summary>
+/// The JSON API (see docs/console.md). Reads are open to every console; actions need the operator role, except the
+/// emergency stop: stopping is never a privilege, so every console, watching or operating, may stop the robot.
+/// </summary>
 internal static class ApiEndpoints
 {
     public static void Map(IEndpointRouteBuilder app, IConsoleSession session, OperatorRole role)
@@ -43,6 +46,7 @@ internal static class ApiEndpoints
 
         api.MapPost("/controllers/{id:int}/reload", async (int id) => Result(await session.ReloadParametersAsync(id).ConfigureAwait(false)));
 
+        api.MapPost("/estop", async () => Result(await session.EmergencyStopAsync().ConfigureAwait(false))); // any console: stopping is never a privilege
         var actions = OperatorOnly(api.MapGroup(string.Empty), role);
         actions.MapPost("/discover", async () => Result(await session.DiscoverAsync().ConfigureAwait(false)));
         actions.MapPost("/torque", async (HttpRequest request) =>
@@ -55,7 +59,6 @@ internal static class ApiEndpoints
             var (body, problem) = await ApiBodies.Read<PedalBody>(request, "pedal").ConfigureAwait(false);
             return body?.Down is { } down ? Result(await session.PedalAsync(down).ConfigureAwait(false)) : Error(StatusCodes.Status400BadRequest, problem ?? "pedal: give {\"down\": true|false}");
         });
-        actions.MapPost("/estop", async () => Result(await session.EmergencyStopAsync().ConfigureAwait(false)));
         actions.MapPost("/home", async () => Result(await session.HomeAsync(null).ConfigureAwait(false)));
         actions.MapPost("/faults/clear", async () => Result(await session.ClearFaultsAsync().ConfigureAwait(false)));
         actions.MapPut("/controllers/{id:int}/name", async (int id, HttpRequest request) =>

@@ -1,18 +1,18 @@
-using System.Collections.Concurrent;
+using RobotControl.Robot.Bus;
 
 namespace RobotControl.WebConsole.Session;
 
 /// <summary>
-/// Commands handed from the web threads to the thread that owns the bus: <see cref="Submit"/> queues work and returns
-/// a task; the owner calls <see cref="Drain"/> between bus cycles, which runs the queued work on its own thread and
-/// completes the tasks. The web threads never touch the bus.
+/// The console's commands, handed from the web threads to the robot's one slot for work between bus cycles
+/// (<see cref="BetweenCycles"/>): <see cref="Submit"/> queues a command and returns a task completed when the bus's
+/// owner has run it; an exception it throws becomes a failed result with its message. The web threads never touch the
+/// bus. An emergency stop is not a command: it goes to the safety supervisor directly and never waits here.
 /// </summary>
-public sealed class CommandQueue
+public sealed class CommandQueue(BetweenCycles slot)
 {
-    private readonly ConcurrentQueue<(Func<CommandResult> Work, TaskCompletionSource<CommandResult> Done)> _queue = new();
     private volatile bool _closed;
 
-    /// <summary>Queues <paramref name="work"/>; the task completes when the owner has run it.</summary>
+    /// <summary>Queues <paramref name="work"/>; the task completes when the bus's owner has run it.</summary>
     public Task<CommandResult> Submit(Func<CommandResult> work)
     {
         ArgumentNullException.ThrowIfNull(work);
@@ -21,38 +21,20 @@ public sealed class CommandQueue
             return Task.FromResult(CommandResult.Fail(CommandOutcome.Failed, "the session is stopping"));
         }
 
-        var done = new TaskCompletionSource<CommandResult>(TaskCreationOptions.RunContinuationsAsynchronously);
-        _queue.Enqueue((work, done));
-        return done.Task;
+        return slot.Post("console command", work).ContinueWith(
+            static t => t.IsCompletedSuccessfully ? t.Result : CommandResult.Fail(CommandOutcome.Failed, Reason(t.Exception!)),
+            CancellationToken.None,
+            TaskContinuationOptions.ExecuteSynchronously,
+            TaskScheduler.Default);
     }
 
-    /// <summary>Runs every queued command (owner thread). Returns how many ran.</summary>
-    public int Drain()
+    /// <summary>Refuses further commands (the session is stopping; queued ones fail when the bus cycles stop).</summary>
+    public void Close() => _closed = true;
+
+    private static string Reason(AggregateException ex) => ex.InnerException switch
     {
-        var n = 0;
-        while (_queue.TryDequeue(out var item))
-        {
-            n++;
-            try
-            {
-                item.Done.SetResult(item.Work());
-            }
-            catch (Exception ex) when (ex is IOException or InvalidOperationException or ArgumentException or KeyNotFoundException)
-            {
-                item.Done.SetResult(CommandResult.Fail(CommandOutcome.Failed, ex.Message));
-            }
-        }
-
-        return n;
-    }
-
-    /// <summary>Refuses further commands and fails the queued ones (the owner is stopping).</summary>
-    public void Close()
-    {
-        _closed = true;
-        while (_queue.TryDequeue(out var item))
-        {
-            item.Done.SetResult(CommandResult.Fail(CommandOutcome.Failed, "the session stopped"));
-        }
-    }
+        InvalidOperationException or IOException or ArgumentException or KeyNotFoundException or OperationCanceledException => ex.InnerException.Message,
+        { } other => $"{other.GetType().Name}: {other.Message}",
+        null => ex.Message,
+    };
 }

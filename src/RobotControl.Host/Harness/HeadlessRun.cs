@@ -5,6 +5,7 @@ using RobotControl.Host.Realtime;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Robot.Bus;
+using RobotControl.Robot.Events;
 using RobotControl.Robot.Control;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.GraphFiles;
@@ -48,10 +49,11 @@ public static class HeadlessRun
             new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
             catalog);
         var bus = session.Robot;
+        using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
         var sim = session.Simulation!;
         var clock = session.Clock;
         var faults = new List<FaultEntry>();
-        DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
+        DrainEvents(events, TimeSpan.Zero, faults); // discovery problems, once, at time 0
         var begin = clock.GetTimestamp();
         foreach (var reset in options.Inject.Resets)
         {
@@ -85,7 +87,7 @@ public static class HeadlessRun
                 {
                     reported = loop.TickCount;
                     var elapsed = clock.GetElapsedTime(begin);
-                    DrainEvents(bus, elapsed, faults);
+                    DrainEvents(events, elapsed, faults);
                     progress?.Invoke(Progress(loop, meter!, elapsed, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
                 }
             },
@@ -142,10 +144,11 @@ public static class HeadlessRun
             new SessionOptions { GraphPath = options.GraphPath, Virtual = false, Transport = options.Transport, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
             catalog);
         var bus = session.Robot;
+        using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
         var loop = session.Loop;
         var clock = session.Clock;
         var faults = new List<FaultEntry>();
-        DrainEvents(bus, TimeSpan.Zero, faults); // discovery problems, once, at time 0
+        DrainEvents(events, TimeSpan.Zero, faults); // discovery problems, once, at time 0
         var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
         using var operatorStop = OperatorStop(options, session.Supervisor);
         var nextProgress = options.ProgressInterval;
@@ -167,7 +170,7 @@ public static class HeadlessRun
                 if (now >= nextProgress || now >= options.Duration)
                 {
                     nextProgress += options.ProgressInterval;
-                    DrainEvents(bus, now, faults);
+                    DrainEvents(events, now, faults);
                     progress?.Invoke(Progress(loop, meter!, now, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
                 }
             }
@@ -195,7 +198,8 @@ public static class HeadlessRun
     private static RunReport Finish(FaultStop stopper, StopCheck check, ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, List<FaultEntry> faults)
     {
         var bus = session.Robot;
-        DrainEvents(bus, elapsed, faults);
+        using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
+        DrainEvents(events, elapsed, faults);
         if (stopper.Fault is { } fault)
         {
             faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"robot fault, run stopped commanding: {fault}"));
@@ -218,6 +222,7 @@ public static class HeadlessRun
     {
         var loaded = session.Graph;
         var bus = session.Robot;
+        using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
         var all = faults
             .Concat(loaded.Program.Faults.Select(f => new FaultEntry(f.Time.TotalSeconds, f.Instance, f.Message)))
             .OrderBy(f => f.TimeSeconds)
@@ -243,9 +248,9 @@ public static class HeadlessRun
             SafetyReport.Of(session.Supervisor));
     }
 
-    private static void DrainEvents(BusRobot bus, TimeSpan at, List<FaultEntry> faults)
+    private static void DrainEvents(RobotEventSubscription events, TimeSpan at, List<FaultEntry> faults)
     {
-        while (bus.Events.TryDequeue(out var e))
+        while (events.TryRead(out var e))
         {
             faults.Add(new FaultEntry(at.TotalSeconds, "robot", e.Message.Trim()));
         }

@@ -8,8 +8,8 @@ namespace RobotControl.Host.Safety;
 /// <summary>The per-cycle checks, run inside the bus cycle between read and write; allocation-free while nothing trips.</summary>
 public sealed partial class SafetySupervisor
 {
-    /// <summary>The per-cycle checks (the robot's <see cref="BusRobot.AfterUpdate"/>).</summary>
-    private void CheckCycle()
+    /// <summary>The per-cycle checks: step <b>check</b> of the robot's cycle, on the bus thread.</summary>
+    void ICycleCheck.Check()
     {
         FollowOperator();
         if (Level == RunLevel.Init)
@@ -61,7 +61,7 @@ public sealed partial class SafetySupervisor
     {
         for (var a = 0; a < _arms; a++)
         {
-            var age = _robot.InputAgeMs(a);
+            var age = _inputs.AgeMs(a);
             if (!(age <= Limits.MasterTimeoutMs))
             {
                 return (a, age);
@@ -93,7 +93,7 @@ public sealed partial class SafetySupervisor
             }
         }
 
-        PedalUp(TripSource, string.Create(CultureInfo.InvariantCulture, $"master_timeout {joint}: input data {age:0.#} ms old (limit {Limits.MasterTimeoutMs:0.#}): hold"));
+        PedalUpOnBus(TripSource, string.Create(CultureInfo.InvariantCulture, $"master_timeout {joint}: input data {age:0.#} ms old (limit {Limits.MasterTimeoutMs:0.#}): hold"));
     }
 
     private void CheckModules(long now)

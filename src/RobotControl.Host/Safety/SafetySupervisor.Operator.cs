@@ -6,7 +6,11 @@ using RobotControl.Robot.States;
 
 namespace RobotControl.Host.Safety;
 
-/// <summary>The operator's commands: home, pedal down and up, motors off, emergency stop (also from another thread), reset.</summary>
+/// <summary>
+/// The operator's commands: home, pedal down and up, motors off, reset, each run on the bus thread between cycles
+/// (called from another thread while a bus thread runs, the call waits for it); and the emergency stop, which never
+/// waits.
+/// </summary>
 public sealed partial class SafetySupervisor
 {
     /// <summary>
@@ -15,7 +19,9 @@ public sealed partial class SafetySupervisor
     /// on, holding the measured positions. Homing that does not verify every motor returns to INIT.
     /// </summary>
     /// <exception cref="InvalidOperationException">Not at INIT, or homing incomplete (the message says how many motors failed).</exception>
-    public IReadOnlyList<HomingResult> Home(string source)
+    public IReadOnlyList<HomingResult> Home(string source) => _robot.Slot.Run($"homing ({source})", () => HomeOnBus(source));
+
+    private IReadOnlyList<HomingResult> HomeOnBus(string source)
     {
         if (Level == RunLevel.EStop)
         {
@@ -61,7 +67,9 @@ public sealed partial class SafetySupervisor
 
     /// <summary>PEDAL_UP -> PEDAL_DOWN: teleoperation drives the arms (from the measured positions, under the step cap).</summary>
     /// <exception cref="InvalidOperationException">Not at PEDAL_UP, or an arm's input device data is older than the master timeout.</exception>
-    public void PedalDown(string source)
+    public void PedalDown(string source) => _robot.Slot.Run($"pedal down ({source})", () => PedalDownOnBus(source));
+
+    private void PedalDownOnBus(string source)
     {
         if (!_levels.CanMoveTo(RunLevel.PedalDown))
         {
@@ -83,7 +91,9 @@ public sealed partial class SafetySupervisor
     }
 
     /// <summary>PEDAL_DOWN -> PEDAL_UP: the arms hold where they are; teleoperation is ignored.</summary>
-    public void PedalUp(string source, string reason = "pedal up: holding position")
+    public void PedalUp(string source, string reason = "pedal up: holding position") => _robot.Slot.Run($"pedal up ({source})", () => PedalUpOnBus(source, reason));
+
+    private void PedalUpOnBus(string source, string reason)
     {
         if (Level != RunLevel.PedalDown)
         {
@@ -103,12 +113,17 @@ public sealed partial class SafetySupervisor
     public void MotorsOff(string source)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(source);
+        _robot.Slot.Run($"motors off ({source})", () => MotorsOffOnBus(source));
+    }
+
+    private void MotorsOffOnBus(string source)
+    {
         if (Level == RunLevel.Homing)
         {
             throw new InvalidOperationException($"motors off ({source}): homing runs, wait for it to end");
         }
 
-        PedalUp(source, "pedal up: the motors go off");
+        PedalUpOnBus(source, "pedal up: the motors go off");
         _robot.HoldAtMeasured();
         if (_robot.State is RobotState.Enabled or RobotState.Fault)
         {
@@ -121,31 +136,38 @@ public sealed partial class SafetySupervisor
         }
     }
 
-    /// <summary>An operator's emergency stop (console, CLI or pedal): the operator check's safe state, then E-STOP.</summary>
+    /// <summary>
+    /// An emergency stop, from any source and any thread (a console, watching or operating; the command line; a
+    /// signal), lock-free and never waiting: the robot holds (and, when the operator check's safe state says so, its
+    /// motors go off) at the next write, ahead of any queued work, whose running piece is cut short at its next
+    /// transaction; the trip is recorded and the run level moves to E_STOP at the next check (at once when called on
+    /// the bus thread itself: a command between cycles, the pedal in a check).
+    /// </summary>
     public void EmergencyStop(string source, string reason)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(source);
         ArgumentException.ThrowIfNullOrWhiteSpace(reason);
-        Trip(SafetyCheck.Operator, string.Empty, 0, 0, string.Empty, _time.GetTimestamp(), source, reason);
-    }
+        _robot.EmergencyHold(reason, _safeStates[(int)SafetyCheck.Operator] == SafeState.TorqueOff && !_torqueOffTaken);
+        if (_robot.Slot.IsOwner)
+        {
+            Trip(SafetyCheck.Operator, string.Empty, 0, 0, string.Empty, _time.GetTimestamp(), source, reason);
+            return;
+        }
 
-    /// <summary>
-    /// An emergency stop asked for from any thread (the command line's E-STOP key, a signal): taken in the next bus
-    /// cycle, on the thread that runs the checks, exactly as <see cref="EmergencyStop"/>. Safe to call at any time.
-    /// </summary>
-    public void RequestEmergencyStop(string source, string reason)
-    {
-        ArgumentException.ThrowIfNullOrWhiteSpace(source);
-        ArgumentException.ThrowIfNullOrWhiteSpace(reason);
         Volatile.Write(ref _stopRequest, new EmergencyStopRequest(source, reason));
     }
+
+    /// <summary>The same as <see cref="EmergencyStop"/> (kept for the callers that say they are on another thread).</summary>
+    public void RequestEmergencyStop(string source, string reason) => EmergencyStop(source, reason);
 
     /// <summary>
     /// Leaves E-STOP for INIT, on an operator's explicit request: motors off, faults cleared. The robot must be homed
     /// again (<see cref="Home"/>) before it may move: positions may have been lost.
     /// </summary>
     /// <exception cref="InvalidOperationException">Not at E-STOP.</exception>
-    public void Reset(string source)
+    public void Reset(string source) => _robot.Slot.Run($"reset ({source})", () => ResetOnBus(source));
+
+    private void ResetOnBus(string source)
     {
         if (Level != RunLevel.EStop)
         {
@@ -193,26 +215,41 @@ public sealed partial class SafetySupervisor
     {
         if (Volatile.Read(ref _stopRequest) is not null && Interlocked.Exchange(ref _stopRequest, null) is { } request)
         {
-            EmergencyStop(request.Source, request.Reason);
+            Trip(SafetyCheck.Operator, string.Empty, 0, 0, string.Empty, _time.GetTimestamp(), request.Source, request.Reason);
         }
 
-        var stop = _robot.EmergencyStopPedal;
+        var stop = _inputs.EmergencyStop;
         if (stop == OperatorPedal.Down && _lastEmergencyStop != OperatorPedal.Down && Level != RunLevel.EStop)
         {
             EmergencyStop(PedalSource, "emergency-stop pedal pressed");
         }
 
         _lastEmergencyStop = stop;
-        var pedal = _robot.Pedal;
+        var pedal = _inputs.Pedal;
         if (pedal == OperatorPedal.Down && _lastPedal == OperatorPedal.Up && Level == RunLevel.PedalUp && StaleArm() is null)
         {
-            PedalDown(PedalSource);
+            PedalDownOnBus(PedalSource);
         }
         else if (pedal == OperatorPedal.Up && Level == RunLevel.PedalDown)
         {
-            PedalUp(PedalSource, "pedal up: holding position");
+            PedalUpOnBus(PedalSource, "pedal up: holding position");
         }
 
         _lastPedal = pedal;
     }
+
+    /// <inheritdoc />
+    public bool TeleopAllowed => !_robot.IsHolding;
+
+    /// <inheritdoc />
+    public void ReportInputAge(int arm, double ageMs) => _inputs.ReportAge(arm, ageMs);
+
+    /// <inheritdoc />
+    public void ReportPedal(bool down) => _inputs.ReportPedal(down);
+
+    /// <inheritdoc />
+    public void ReportEmergencyStop(bool pressed) => _inputs.ReportEmergencyStop(pressed);
+
+    /// <summary>The age last reported for <paramref name="arm"/>'s input device data, ms (0 before any report).</summary>
+    public double InputAgeMs(int arm) => _inputs.AgeMs(arm);
 }

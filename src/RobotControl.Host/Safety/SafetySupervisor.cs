@@ -8,20 +8,28 @@ namespace RobotControl.Host.Safety;
 
 /// <summary>
 /// Owns the question "is it safe to move?": the run level (<see cref="RunLevelMachine"/>), the operator's commands
-/// (home, pedal, emergency stop, reset) and the per-cycle checks, which run inside the bus cycle between read and
-/// write (<see cref="BusRobot.AfterUpdate"/>), allocation-free while nothing trips. Outside
+/// (home, pedal, emergency stop, reset) and the per-cycle checks, the cycle's step <b>check</b> after read and publish
+/// (<see cref="BusRobot.Check"/>), allocation-free while nothing trips. Outside
 /// <see cref="RunLevel.PedalDown"/> the robot holds (goals frozen at the measured positions: teleoperation is
 /// ignored); every goal is under the robot layer's step cap. A trip records what crossed which limit, puts the robot
 /// in the check's safe state (<see cref="SafetyLimits.SafeStateOf"/>) and moves to <see cref="RunLevel.EStop"/>;
 /// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again. The master
-/// timeout (input device data older than its limit, <see cref="BusRobot.InputAgeMs"/>) is the one soft trip that,
+/// timeout (input device data older than its limit, as the graph reports it through <see cref="IOperatorPort"/>) is the one soft trip that,
 /// with its default safe state hold, goes back to <see cref="RunLevel.PedalUp"/> instead (as the Raven-II's
 /// master-data timeout forces pedal-up): the operator may press the pedal again once the data is fresh. When the graph
-/// wires a pedal to the robot node (<see cref="BusRobot.Pedal"/>), PEDAL_UP and PEDAL_DOWN follow it (a press moves
+/// wires a pedal to the robot node (<see cref="ReportPedal"/>), PEDAL_UP and PEDAL_DOWN follow it (a press moves
 /// to PEDAL_DOWN only from PEDAL_UP, so after a timeout or a trip the operator lifts and presses again); an
-/// emergency-stop pedal or button (<see cref="BusRobot.EmergencyStopPedal"/>) trips E-STOP when pressed.
+/// emergency-stop pedal or button (<see cref="ReportEmergencyStop"/>) trips E-STOP when pressed.
+/// <para>
+/// Threads: the checks run on the bus thread (<see cref="ICycleCheck"/>, step <b>check</b> of the cycle) and decide
+/// only: their actions (hold, motors off) are requests the robot's next write takes up, with no bus traffic inside the
+/// check. The operator's commands (<see cref="Home"/>, pedal, <see cref="MotorsOff"/>, <see cref="Reset"/>) run on the
+/// bus thread too, between cycles. The loop's thread reports the operator's inputs (<see cref="IOperatorPort"/>), kept
+/// apart in <see cref="OperatorInputs"/>. An emergency stop never waits: from any thread it is a lock-free request.
+/// </para>
 /// </summary>
-public sealed partial class SafetySupervisor
+[WrittenBy(RobotThread.Bus)]
+public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
 {
     private const string TripSource = "supervisor";
     private const string PedalSource = "pedal";
@@ -40,6 +48,7 @@ public sealed partial class SafetySupervisor
     private readonly double[] _trackingLimit;
     private readonly double[] _potLimit;
     private readonly long[] _answeredAt;
+    private readonly OperatorInputs _inputs;
     private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
     private readonly SafeState[] _safeStates; // per check, looked up once: a trip's path does no dictionary lookup
     private readonly long _trackingTicks;
@@ -89,9 +98,10 @@ public sealed partial class SafetySupervisor
         _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
         _arms = robot.ArmCount;
         _watchdogMs = robot.Definition.Modules.WatchdogMs;
+        _inputs = new OperatorInputs(_arms);
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
-        _robot.AfterUpdate = CheckCycle;
+        _robot.CycleCheck = this;
     }
 
     /// <summary>Thresholds and safe states.</summary>
@@ -148,33 +158,13 @@ public sealed partial class SafetySupervisor
             _trips.Add(new SafetyTrip(now, check, joint, measured, limit, unit, action));
         }
 
-        _robot.HoldAtMeasured();
-        if (action == SafeState.TorqueOff && !_torqueOffTaken)
-        {
-            _torqueOffTaken = true;
-            TorqueOff();
-        }
+        var torqueOff = action == SafeState.TorqueOff && !_torqueOffTaken;
+        _torqueOffTaken |= torqueOff;
+        _robot.EmergencyHold($"{check.Name()} {joint}".TrimEnd() + $": {action.Name()}", torqueOff); // taken at the next write, before any queued work
 
         if (Level != RunLevel.EStop)
         {
             _levels.MoveTo(RunLevel.EStop, source, reason ?? $"{check.Name()} {joint}".TrimEnd() + $": {action.Name()}");
-        }
-    }
-
-    private void TorqueOff()
-    {
-        if (_robot.State is RobotState.Homing or RobotState.Disabled)
-        {
-            return;
-        }
-
-        try
-        {
-            _robot.EnableTorque(false);
-        }
-        catch (IOException)
-        {
-            // A module that does not answer cannot be told; its bus watchdog stops its motors when the goals stop.
         }
     }
 

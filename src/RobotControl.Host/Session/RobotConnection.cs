@@ -16,13 +16,13 @@ namespace RobotControl.Host.Session;
 /// </summary>
 public sealed class RobotConnection : IDisposable
 {
-    private RobotConnection(BusClient client, RobotDefinition? robot, VirtualRobot? simulation, ManualTimeProvider? virtualClock)
+    private RobotConnection(BusClient client, RobotDefinition? robot, VirtualRobot? simulation, ManualTimeProvider? virtualClock, BusRobotOptions? robotOptions = null)
     {
         Client = client;
         Definition = robot;
         Simulation = simulation;
         VirtualClock = virtualClock;
-        Robot = robot is null ? null : new BusRobot(robot, client);
+        Robot = robot is null ? null : new BusRobot(robot, client, robotOptions);
     }
 
     /// <summary>The protocol client.</summary>
@@ -82,23 +82,23 @@ public sealed class RobotConnection : IDisposable
     }
 
     /// <summary>Opens <paramref name="robot"/> on a real link (the connection owns it) on the system clock.</summary>
-    public static RobotConnection OpenReal(IByteLink link, RobotDefinition? robot, BusClientOptions? clientOptions = null)
+    public static RobotConnection OpenReal(IByteLink link, RobotDefinition? robot, BusClientOptions? clientOptions = null, BusRobotOptions? robotOptions = null)
     {
         ArgumentNullException.ThrowIfNull(link);
-        return new RobotConnection(new BusClient(link, TimeProvider.System, clientOptions), robot, null, null);
+        return new RobotConnection(new BusClient(link, TimeProvider.System, clientOptions), robot, null, null, robotOptions);
     }
 
     /// <summary>
     /// Builds the virtual robot of <paramref name="robot"/> on a new simulated clock and opens its bus;
     /// <paramref name="wrapLink"/>, if given, wraps the host's end of the link (e.g. to timestamp frames).
     /// </summary>
-    public static RobotConnection OpenVirtual(RobotDefinition robot, VirtualRobotOptions? simulation = null, BusClientOptions? clientOptions = null, Func<IByteLink, TimeProvider, IByteLink>? wrapLink = null)
+    public static RobotConnection OpenVirtual(RobotDefinition robot, VirtualRobotOptions? simulation = null, BusClientOptions? clientOptions = null, Func<IByteLink, TimeProvider, IByteLink>? wrapLink = null, BusRobotOptions? robotOptions = null)
     {
         ArgumentNullException.ThrowIfNull(robot);
         var clock = new ManualTimeProvider();
         var sim = new VirtualRobot(robot, clock, simulation);
         var link = sim.OpenLink();
-        return new RobotConnection(new BusClient(wrapLink?.Invoke(link, clock) ?? link, clock, clientOptions), robot, sim, clock);
+        return new RobotConnection(new BusClient(wrapLink?.Invoke(link, clock) ?? link, clock, clientOptions), robot, sim, clock, robotOptions);
     }
 
     /// <summary>The robot layer.</summary>

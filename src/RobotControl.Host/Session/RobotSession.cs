@@ -86,7 +86,7 @@ public sealed class RobotSession : IDisposable
         RobotConnection connection;
         if (options.Virtual)
         {
-            connection = RobotConnection.OpenVirtual(robot, new VirtualRobotOptions { InitialJointsRad = InitialCommand(loaded), Seed = options.Seed }, null, options.WrapLink);
+            connection = RobotConnection.OpenVirtual(robot, new VirtualRobotOptions { InitialJointsRad = InitialCommand(loaded), Seed = options.Seed }, null, options.WrapLink, options.Robot);
         }
         else
         {
@@ -97,7 +97,7 @@ public sealed class RobotSession : IDisposable
             }
 
             var link = LinkFactory.Open(transport);
-            connection = RobotConnection.OpenReal(options.WrapLink?.Invoke(link, TimeProvider.System) ?? link, robot);
+            connection = RobotConnection.OpenReal(options.WrapLink?.Invoke(link, TimeProvider.System) ?? link, robot, null, options.Robot);
         }
 
         try
@@ -112,7 +112,7 @@ public sealed class RobotSession : IDisposable
                 supervisor.Home("session"); // a real session homes and arms the modules in StartRealtime, once the cycle runs at rate
             }
 
-            loaded.RobotNode!.Attach(bus);
+            loaded.RobotNode!.Attach(bus, supervisor); // the graph reports the operator's pedals and input ages to the supervisor
             var observer = options.Observer?.Invoke(loaded.RobotNode!, bus);
             var loop = new ControlLoop(loaded.Program, loopClock ?? TimeProvider.System, loaded.Document.LoopRateHz, observer);
             return new RobotSession(loaded, connection, loopClock, discovery, loop, supervisor);
@@ -192,6 +192,29 @@ public sealed class RobotSession : IDisposable
         Robot.RunFor(WarmUp);
         _ = StopCheck.TorqueOffAndVerify(Robot); // the stop's path too: compiled now, it cannot stall a stop past the watchdog
         Supervisor.Home("session"); // INIT -> HOMING -> PEDAL_UP: motors on, watchdogs armed
+        StartThreads(scheduling);
+    }
+
+    /// <summary>
+    /// Starts the bus thread and the loop thread with the motors as they are (the console on a real bus: the operator
+    /// turns them on); the code is compiled first (<see cref="PrepareRealtime"/>). From here on, set-up and commands
+    /// run on the bus thread between cycles.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The session is virtual, or already running.</exception>
+    public void StartBus(RealtimeThreads threads)
+    {
+        ArgumentNullException.ThrowIfNull(threads);
+        if (IsVirtual || _running)
+        {
+            throw new InvalidOperationException(IsVirtual ? "a virtual session runs on its schedule (RunVirtual)" : "the session is running already");
+        }
+
+        PrepareRealtime(threads);
+        StartThreads(threads);
+    }
+
+    private void StartThreads(RealtimeThreads scheduling)
+    {
         _running = true;
         scheduling.Start(Robot.Start, Loop.Start); // each thread schedules itself (.NET threads do not inherit it)
     }

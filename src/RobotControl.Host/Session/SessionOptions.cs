@@ -34,6 +34,9 @@ public sealed record SessionOptions
     /// <summary>Wraps the host's end of a virtual bus (e.g. to timestamp frames); gets the link and the bus clock.</summary>
     public Func<IByteLink, TimeProvider, IByteLink>? WrapLink { get; init; }
 
+    /// <summary>How the robot runs its bus (polls); null: the defaults.</summary>
+    public RobotControl.Robot.Bus.BusRobotOptions? Robot { get; init; }
+
     /// <summary>Makes the loop's observer (called after every tick) from the robot node and the robot.</summary>
     public Func<RobotNode, IRobotPort, ITickObserver>? Observer { get; init; }
 }

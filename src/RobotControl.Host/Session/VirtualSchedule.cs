@@ -12,10 +12,13 @@ namespace RobotControl.Host.Session;
 /// bytes take their time and the firmware and motor models run.</item>
 /// <item><b>tick</b>: every loop tick whose instant has now passed runs, at that instant (the loop clock is set to
 /// it). The feedback just read is not published yet, so a tick sees what was published before its instant.</item>
-/// <item><b>update</b> (<see cref="BusRobot.Update"/>): the feedback is published and the modules supervised
-/// (status polls take bus time too), followed by the ticks that came due meanwhile.</item>
-/// <item><b>write</b> (<see cref="BusRobot.Write"/>): the setpoints the ticks wrote become goals on the wire.</item>
+/// <item><b>publish</b> (<see cref="BusRobot.Publish"/>): the feedback is published and the modules watched (status
+/// polls take bus time too), then <b>check</b> (<see cref="BusRobot.Check"/>, the safety supervisor), followed by the
+/// ticks that came due meanwhile.</item>
+/// <item>one piece of the work between cycles (<see cref="BusRobot.RunBetweenCycles"/>), then <b>write</b>
+/// (<see cref="BusRobot.Write"/>): the setpoints the ticks wrote become goals on the wire.</item>
 /// </list>
+/// The schedule's thread owns the bus while it runs, so set-up asked for from other threads runs between its cycles.
 /// This is the deterministic equivalent of a loop thread and a bus thread exchanging latest values: each tick sees
 /// and writes exactly what it would at its instant with two threads, whatever a bus cycle costs relative to the loop
 /// period. The same robot, graph, faults and seed give the same run.
@@ -58,8 +61,9 @@ public sealed class VirtualSchedule
     }
 
     /// <summary>
-    /// Runs cycles until every tick has run, or <paramref name="stopWhen"/> (checked after each cycle) says stop;
-    /// <paramref name="afterCycle"/> runs after each (progress, events).
+    /// Runs cycles until every tick has run, or <paramref name="stopWhen"/> (checked after each cycle) says stop, in
+    /// which case one last write takes up what the last check decided; <paramref name="afterCycle"/> runs after each
+    /// (progress, events).
     /// </summary>
     public void Run(Action? afterCycle = null, Func<bool>? stopWhen = null)
     {
@@ -68,19 +72,28 @@ public sealed class VirtualSchedule
             return;
         }
 
+        using var own = _robot.OwnBus();
         _robot.Write();
         while (true)
         {
             _robot.Read();
             TickDue();
-            _robot.Update();
+            _robot.Publish();
+            _robot.Check();
             TickDue();
             afterCycle?.Invoke();
-            if (_loop.TickCount >= _ticks || (stopWhen is not null && stopWhen()))
+            if (stopWhen is not null && stopWhen())
+            {
+                _robot.Write(); // what the last check decided (a hold, the motors off) reaches the wire before the run ends
+                return;
+            }
+
+            if (_loop.TickCount >= _ticks)
             {
                 return;
             }
 
+            _robot.RunBetweenCycles();
             _robot.Write();
         }
     }

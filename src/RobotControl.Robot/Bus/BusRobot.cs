@@ -1,10 +1,7 @@
-using System.Collections.Concurrent;
+using System.Runtime.CompilerServices;
 using RobotControl.Bus.Client;
-using RobotControl.Bus.Protocol;
-using RobotControl.Hardware.Exchange;
 using RobotControl.Hardware.Model;
 using RobotControl.Kinematics.Coupling;
-using RobotControl.Modules;
 using RobotControl.Robot.Control;
 using RobotControl.Robot.Events;
 using RobotControl.Robot.States;
@@ -12,78 +9,48 @@ using RobotControl.Robot.States;
 namespace RobotControl.Robot.Bus;
 
 /// <summary>
-/// A robot on its module bus: the controllers (modules) of the robot file, found by ID; their motors named after the
-/// joints; parameters kept in the modules' FRAM; the joint &lt;-&gt; motor mapping with the couplings; joint limits
-/// enforced; and the <see cref="IRobotPort"/> the control loop uses. Split by job over its files: this one (state,
-/// construction), <c>BusRobot.Setup.cs</c> (discover, parameters, torque), <c>BusRobot.Homing.cs</c>,
-/// <c>BusRobot.Cycle.cs</c> (the bus cycle's steps <see cref="Read"/>, <see cref="Update"/> and <see cref="Write"/>),
-/// <c>BusRobot.Supervision.cs</c> (status poll, resets, watchdog) and <c>BusRobot.Port.cs</c>.
-/// <para>
-/// Its life is a <see cref="RobotStateMachine"/> (<see cref="State"/>), declared in <see cref="DeclareStates"/>:
-/// <see cref="RobotState.Disabled"/> -> <see cref="RobotState.Discovered"/> (<see cref="Discover"/>) ->
-/// <see cref="RobotState.Homing"/> -> <see cref="RobotState.Homed"/> (<see cref="Home"/>) ->
-/// <see cref="RobotState.Enabled"/> (<see cref="EnableTorque"/>), and <see cref="RobotState.Fault"/> when a module
-/// stops its motors. Setup calls are refused in states they do not fit, and must not overlap cycles.
-/// </para>
+/// A robot on its module bus, as one facade over the parts of the robot core, each of which owns its state and says
+/// which thread writes it (<see cref="WrittenByAttribute"/>):
+/// <list type="bullet">
+/// <item><see cref="SetpointExchange"/>: the setpoints, written by the control loop's thread (<see cref="IRobotPort"/>).</item>
+/// <item><see cref="GoalWriter"/>: step <b>write</b> (goals, hold, step cap, encoding), on the bus thread; takes up
+/// the requests other threads make (a stop, a hold, the motors off, faults cleared).</item>
+/// <item><see cref="FeedbackExchange"/>: steps <b>read</b> and <b>publish</b>, on the bus thread.</item>
+/// <item><see cref="ModuleSupervisor"/>: status, pots, resets, watchdogs, missing modules, after each publish.</item>
+/// <item><see cref="RobotSetup"/> and <see cref="Homing"/>: discovery, parameters, torque, homing, driven by the
+/// state machine (<see cref="RobotLifecycle"/>), run between cycles (<see cref="BetweenCycles"/>).</item>
+/// </list>
+/// The cycle is write, read, publish, check (<see cref="ICycleCheck"/>, the safety supervisor), then one piece of the
+/// work between cycles; the bus thread (<see cref="Start(Action)"/>), <see cref="RunFor"/> and the virtual schedule
+/// all run this one cycle. A set-up call made from another thread while a thread owns the bus is queued for it and
+/// waited for; an emergency stop never waits (<see cref="EmergencyHold"/>).
 /// </summary>
-public sealed partial class BusRobot : IRobotPort, IBusCycle, IDisposable
+public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
 {
+    /// <summary>
+    /// Retries of a transaction that must get through: the arming writes and a stop's torque-off and read-back
+    /// (12 transactions in all, up to about 10 ms at 1 Mbaud). Switching the motors on or off is set-up, not the cycle,
+    /// and one stalled reply must not leave a robot half-armed or a stop unverified (a pty simulator in another process
+    /// missed whole transactions under load). A refusal (an answer with an error) is final.
+    /// </summary>
+    public const int InsistingRetries = 11;
+
     private readonly BusClient _client;
-    private readonly ControlTable _table;
     private readonly BusRobotOptions _options;
     private readonly TimeProvider _time;
-    private readonly JointMotorMap _map;
-    private readonly RobotController[] _controllers;
-    private readonly RobotMotor[] _motors;
-    private readonly RobotMotor?[][] _motorOf; // [arm][actuator index in the robot file]
-    private readonly int[] _kinematicActuator; // kinematic index -> robot-file actuator index
-    private readonly int _toolActuator;
-    private readonly SeqLock<double>[] _jointSetpoints;
-    private readonly SeqLock<double>[] _jawSetpoints;
-    private readonly SeqLock<double>[] _jointPositions;
-    private readonly SeqLock<double>[] _currents;
-    private readonly RobotStateMachine _state;
-    private readonly double[][] _lastJointSetpoint; // writer side (control loop)
-    private readonly int[] _setpointVersionAtEnable;
-    private readonly double[] _goals; // per motor, axis output radians
-    private readonly double[] _q;
-    private readonly double[] _a;
-    private readonly double[] _armCurrents;
-    private readonly double[] _jaw = new double[1];
-    private readonly ushort _goalAddress;
-    private readonly ushort _feedbackAddress;
-    private readonly int _goalStride;
-    private readonly int _feedbackStride;
-    private readonly int _goalLength;
-    private readonly ushort _statusAddress;
-    private readonly ushort _potAddress;
-    private readonly int _potStride;
-    private readonly int _potLength;
-    private readonly ushort _resetCauseAddress;
-    private readonly ushort _watchdogAddress;
-    private readonly ushort _torqueAddress;
-    private readonly int _watchdogMs;
-    private readonly IReadOnlyDictionary<int, string> _resetCauses;
-    private byte[] _ids = [];
-    private RobotController[] _active = [];
-    private byte[] _writeData = [];
-    private FeedbackGroup[] _groups = [];
-    private byte[] _stateIds = [];
-    private int[] _stateLengths = [];
-    private byte[] _stateData = [];
-    private Reply[] _stateReplies = [];
-    private bool _fastReads;
-    private byte[] _statusData = [];
-    private Reply[] _statusReplies = [];
+    private readonly RobotLayout _layout;
+    private readonly ModuleRoster _roster;
+    private readonly RobotLifecycle _life;
+    private readonly RobotFaultFlags _faults;
+    private readonly SetpointExchange _setpoints;
+    private readonly FeedbackExchange _feedback;
+    private readonly GoalWriter _goals;
+    private readonly ModuleSupervisor _modules;
+    private readonly RobotSetup _setup;
+    private readonly Homing _homing;
+    private readonly BusInterruption _stop = new();
+    private readonly BusThread _thread;
     private long _cycles;
-    private long _lastCycleTimestamp;
-    private int _latchedFaults;
-    private int _liveFaults;
-    private bool _torqueEnabled;
-    private bool _homed;
-    private volatile bool _clearRequested;
-    private volatile bool _stopping;
-    private Thread? _thread;
 
     /// <summary>Opens <paramref name="robot"/> on the bus <paramref name="client"/> talks to (the robot owns the client).</summary>
     /// <exception cref="ArgumentException">The robot file has no modules section.</exception>
@@ -96,167 +63,278 @@ public sealed partial class BusRobot : IRobotPort, IBusCycle, IDisposable
             throw new ArgumentException($"{robot.SourceFile}: the robot file has no modules section; nothing to drive on the bus", nameof(robot));
         }
 
-        Definition = robot;
-        _inputAgeMs = new double[robot.Arms.Count];
         _client = client;
         _time = client.Time;
         _options = options ?? new BusRobotOptions();
-        _table = ControlTable.Firmware;
-        _map = new JointMotorMap(robot);
-        _kinematicActuator = _map.Actuators.Select(a => IndexOf(robot, a)).ToArray();
-        _toolActuator = _map.ToolActuator is { } tool ? IndexOf(robot, tool) : -1;
-        _watchdogMs = robot.Modules.WatchdogMs;
-
-        var controllers = new List<RobotController>();
-        var motors = new List<RobotMotor>();
-        _motorOf = new RobotMotor?[robot.Arms.Count][];
-        for (var arm = 0; arm < robot.Arms.Count; arm++)
+        _layout = new RobotLayout(robot);
+        _roster = new ModuleRoster(_layout);
+        _life = new RobotLifecycle(_time);
+        var seed = new GoalSeed(_layout);
+        _feedback = new FeedbackExchange(_layout, client, _roster, _options, Events);
+        _setpoints = new SetpointExchange(_layout, _feedback, seed);
+        _faults = new RobotFaultFlags(_setpoints);
+        var arming = new ModuleArming(_layout, client, _roster, Events);
+        _modules = new ModuleSupervisor(_layout, client, _roster, _options, Events, _faults, _life, arming);
+        _setup = new RobotSetup(_layout, client, _roster, Events, _faults, _life, arming, _modules, _feedback, _setpoints, seed);
+        _homing = new Homing(_layout, client, _roster, _life, _setup, _feedback);
+        _goals = new GoalWriter(_layout, client, _roster, _setpoints, _feedback, seed, _life, _stop)
         {
-            _motorOf[arm] = new RobotMotor?[robot.Actuators.Count];
-        }
-
-        foreach (var module in robot.Modules.Modules)
-        {
-            var controller = new RobotController(module, controllers.Count);
-            var own = new List<RobotMotor>();
-            foreach (var m in module.Motors.OrderBy(m => m.Channel))
-            {
-                var motor = new RobotMotor(new MotorConfig(robot, module, m), controller, motors.Count);
-                motors.Add(motor);
-                own.Add(motor);
-                _motorOf[module.Arm][m.ActuatorIndex] = motor;
-            }
-
-            controller.MotorArray = own.ToArray();
-            controllers.Add(controller);
-        }
-
-        _controllers = controllers.ToArray();
-        _motors = motors.ToArray();
-        var arms = robot.Arms.Count;
-        _jointSetpoints = Enumerable.Range(0, arms).Select(_ => new SeqLock<double>(robot.JointCount)).ToArray();
-        _jawSetpoints = Enumerable.Range(0, arms).Select(_ => new SeqLock<double>(1)).ToArray();
-        _jointPositions = Enumerable.Range(0, arms).Select(_ => new SeqLock<double>(robot.JointCount)).ToArray();
-        _currents = Enumerable.Range(0, arms).Select(_ => new SeqLock<double>(robot.Actuators.Count)).ToArray();
-        _lastJointSetpoint = Enumerable.Range(0, arms).Select(_ => new double[robot.JointCount]).ToArray();
-        _setpointVersionAtEnable = new int[arms * 2];
-        _goals = new double[_motors.Length];
-        _q = new double[robot.JointCount];
-        _a = new double[robot.JointCount];
-        _armCurrents = new double[robot.Actuators.Count];
-
-        var goal = _table["goal_position"];
-        var position = _table["present_position"];
-        var maxChannels = _controllers.Max(c => c.ChannelSpan);
-        _goalAddress = goal.At(0);
-        _goalStride = goal.Stride;
-        _goalLength = ((maxChannels - 1) * goal.Stride) + goal.Size;
-        _feedbackAddress = position.At(0);
-        _feedbackStride = position.Stride;
-        _statusAddress = _table["hardware_error_status"].At(0);
-        var pot = _table["pot_raw"];
-        _potAddress = pot.At(0);
-        _potStride = pot.Stride;
-        _potLength = ((maxChannels - 1) * pot.Stride) + pot.Size;
-        _resetCauseAddress = _table["reset_cause"].At(0);
-        _watchdogAddress = _table["bus_watchdog"].At(0);
-        _torqueAddress = _table["torque_enable"].At(0);
-        _resetCauses = _table.Codes("reset_cause");
-        if (_resetCauseAddress != _statusAddress + 1 || _watchdogAddress != _statusAddress + 2 || _table["bus_watchdog"].Size != StatusPollLength - 2)
-        {
-            throw new InvalidOperationException("the control table no longer keeps reset_cause and bus_watchdog (2 bytes) right after hardware_error_status; update the status poll");
-        }
-
-        _state = new RobotStateMachine(_time);
-        DeclareStates();
+            TorqueOff = _setup.TorqueOffAtWrite,
+            Clear = _modules.ClearInModules,
+        };
+        Slot = new BetweenCycles(client, _stop);
+        _thread = new BusThread(this, _options, _time);
     }
 
     /// <inheritdoc />
-    public RobotDefinition Definition { get; }
+    public RobotDefinition Definition => _layout.Definition;
 
     /// <inheritdoc />
-    public int ArmCount => Definition.Arms.Count;
+    public int ArmCount => _layout.ArmCount;
 
     /// <summary>The protocol client.</summary>
     public BusClient Client => _client;
 
     /// <summary>Every configured controller, in file order.</summary>
-    public IReadOnlyList<RobotController> Controllers => _controllers;
+    public IReadOnlyList<RobotController> Controllers => _layout.Controllers;
 
     /// <summary>Every configured motor.</summary>
-    public IReadOnlyList<RobotMotor> Motors => _motors;
+    public IReadOnlyList<RobotMotor> Motors => _layout.Motors;
 
     /// <summary>The joint &lt;-&gt; motor mapping.</summary>
-    public JointMotorMap Map => _map;
+    public JointMotorMap Map => _layout.Map;
 
     /// <summary>Completed bus cycles.</summary>
     public long Cycles => Interlocked.Read(ref _cycles);
 
-    /// <summary>Things that happened (discovery problems, module reset, missing, back, watchdog, bus errors), oldest first.</summary>
-    public ConcurrentQueue<RobotEvent> Events { get; } = new();
+    /// <summary>Things that happened (discovery problems, module reset, missing, back, watchdog, bus errors): subscribe to read them.</summary>
+    public RobotEventStream Events { get; } = new();
+
+    /// <summary>The work between cycles: set-up and commands that must run on the bus's owner.</summary>
+    public BetweenCycles Slot { get; }
+
+    /// <summary>The per-cycle check (the safety supervisor), run by step <see cref="Check"/>.</summary>
+    public ICycleCheck? CycleCheck { get; set; }
 
     /// <summary>The robot's state now.</summary>
-    public RobotState State => _state.Current;
+    public RobotState State => _life.State;
 
     /// <summary>Every state change so far with its time and reason, oldest first.</summary>
-    public IReadOnlyList<RobotTransition> StateHistory => _state.History;
+    public IReadOnlyList<RobotTransition> StateHistory => _life.Machine.History;
 
     /// <inheritdoc />
-    public RobotFaults Faults => (RobotFaults)(Volatile.Read(ref _latchedFaults) | Volatile.Read(ref _liveFaults));
+    public RobotFaults Faults => _faults.Value;
+
+    /// <summary>Goals the step cap shortened so far (one per motor and write).</summary>
+    public long StepCapHits => _goals.StepCapHits;
+
+    /// <summary>The largest step asked of a motor in one write that the cap shortened, output radians (0: none).</summary>
+    public double LargestCappedStepRad => _goals.LargestCappedStepRad;
+
+    /// <summary>True while the goals are frozen at the measured positions (<see cref="HoldAtMeasured"/>).</summary>
+    public bool IsHolding => _goals.IsHolding;
+
+    /// <summary>Methods the JIT compiled on the bus thread after its first cycle; known once the thread has ended (<see cref="Stop"/>).</summary>
+    public long MethodsCompiledAfterFirstCycle => _thread.MethodsCompiledAfterFirstCycle;
+
+    /// <summary>Time the bus thread spent in the JIT after its first cycle.</summary>
+    public TimeSpan CompileTimeAfterFirstCycle => _thread.CompileTimeAfterFirstCycle;
 
     /// <summary>The motor named <c>arm.joint</c>, e.g. <c>right.elbow</c>.</summary>
     /// <exception cref="KeyNotFoundException">No such motor.</exception>
     public RobotMotor Motor(string fullName) =>
-        _motors.FirstOrDefault(m => m.Config.FullName == fullName)
-        ?? throw new KeyNotFoundException($"no motor '{fullName}' (motors: {string.Join(", ", _motors.Select(m => m.Config.FullName))})");
+        _layout.Motors.FirstOrDefault(m => m.Config.FullName == fullName)
+        ?? throw new KeyNotFoundException($"no motor '{fullName}' (motors: {string.Join(", ", _layout.Motors.Select(m => m.Config.FullName))})");
 
     /// <summary>The controller with bus ID <paramref name="id"/>, or null.</summary>
-    public RobotController? Controller(byte id) => _controllers.FirstOrDefault(c => c.Id == id);
+    public RobotController? Controller(byte id) => _layout.Controllers.FirstOrDefault(c => c.Id == id);
+
+    /// <summary>The step cap of <paramref name="motor"/> over <paramref name="seconds"/>: its maximum output speed times the time, radians.</summary>
+    public static double StepCapRad(RobotMotor motor, double seconds)
+    {
+        ArgumentNullException.ThrowIfNull(motor);
+        return motor.SpeedLimitRadS * seconds;
+    }
+
+    /// <summary>The goal last sent to <paramref name="motor"/>, output radians (its position before the first write).</summary>
+    public double SentGoalRad(RobotMotor motor)
+    {
+        ArgumentNullException.ThrowIfNull(motor);
+        return _goals.HasWritten ? _goals.SentGoal(motor.Index) : motor.PositionRad;
+    }
+
+    // --- requests any thread may make, taken up at the next write -------------------------------------------------
+
+    /// <summary>Freezes every motor's goal at its measured position from the next write on; the setpoints are ignored until <see cref="ReleaseHold"/>.</summary>
+    public void HoldAtMeasured() => _goals.HoldAtMeasured();
+
+    /// <summary>The setpoints drive the goals again (each still under the step cap).</summary>
+    public void ReleaseHold() => _goals.ReleaseHold();
+
+    /// <summary>The motors go off at the next write (a supervisor's safe state); a refusal is an event, never an exception.</summary>
+    public void RequestTorqueOff(string reason) => _goals.RequestTorqueOff(reason);
+
+    /// <summary>Clears latched faults here and in the modules at the next write, re-arming them if torque was on.</summary>
+    public void ClearFaults() => _goals.RequestClear();
 
     /// <summary>
-    /// The robot's states, each declared once: what entering it does and which states may follow. Torque is on in
-    /// <see cref="RobotState.Enabled"/> and stays as it was in <see cref="RobotState.Fault"/> (the modules stopped
-    /// their motors; clearing the faults re-arms them).
+    /// An emergency stop's action, from any thread, lock-free: hold at the measured positions (and, with
+    /// <paramref name="torqueOff"/>, the motors off) at the next write, and the piece of work running between cycles
+    /// cut short at its next transaction; no queued work starts before the next write.
     /// </summary>
-    private void DeclareStates()
+    public void EmergencyHold(string reason, bool torqueOff) => _goals.EmergencyHold(reason, torqueOff);
+
+    // --- set-up, run by the bus's owner -------------------------------------------------------------------------------
+
+    /// <summary>
+    /// Broadcast-pings the bus and compares what answers with the robot file: missing, unknown and mismatched modules
+    /// are listed (each problem also in <see cref="Events"/>); present ones take part in the cycles. Moves the robot to
+    /// <see cref="RobotState.Discovered"/>.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The motors are on (turn them off first) or homing runs.</exception>
+    public DiscoveryReport Discover() => Slot.Run("discovery", _setup.Discover);
+
+    /// <summary>Reads every present module's persistent area and lists the values that differ from the robot file.</summary>
+    public IReadOnlyList<ParameterMismatch> CheckParameters() => Slot.Run("checking parameters", _setup.CheckParameters);
+
+    /// <summary>Writes the robot file's parameters into every present module's FRAM (each write is durable when acknowledged); returns how many.</summary>
+    /// <exception cref="IOException">A module refused or did not acknowledge a value.</exception>
+    public int WriteParameters() => Slot.Run("writing parameters", _setup.WriteParameters);
+
+    /// <summary>Writes one persistent parameter of one motor (or module-wide field) and reads it back.</summary>
+    /// <exception cref="IOException">The module refused the value or read back something else.</exception>
+    public long WriteParameter(byte moduleId, string field, int motor, long value) =>
+        Slot.Run($"writing {field}[{motor}] of module {moduleId}", () => _setup.WriteParameter(moduleId, field, motor, value));
+
+    /// <summary>Reads one control-table value.</summary>
+    /// <exception cref="IOException">The module does not answer.</exception>
+    public long ReadParameter(byte moduleId, string field, int motor = 0) =>
+        Slot.Run($"reading {field}[{motor}] of module {moduleId}", () => _setup.ReadParameter(moduleId, field, motor));
+
+    /// <summary>
+    /// Turns the motors on (arming each module's bus watchdog) or off. Turning on starts every goal from the present
+    /// position (a seed the next write takes up), so nothing moves until the control loop or a manual command says so.
+    /// </summary>
+    /// <exception cref="IOException">A module refuses (e.g. its watchdog error is latched: clear faults first).</exception>
+    /// <exception cref="InvalidOperationException">On: not discovered, homing, or in <see cref="RobotState.Fault"/>. Off: homing runs.</exception>
+    public void EnableTorque(bool on) => Slot.Run(on ? "motors on" : "motors off", () => _setup.EnableTorque(on));
+
+    /// <summary>Homes every motor of the present modules from its joint pot and verifies the result, motor by motor (see <see cref="Homing"/>).</summary>
+    /// <exception cref="InvalidOperationException">Torque is on: turn it off first (a driven motor must not change coordinates).</exception>
+    public IReadOnlyList<HomingResult> Home() => Slot.Run("homing", _homing.HomeAll);
+
+    /// <summary>Homes one motor from its pot (its module's home request for its channel alone), motors off.</summary>
+    public HomingResult HomeMotor(RobotMotor motor)
     {
-        _state.Declare(RobotState.Disabled, null, RobotState.Discovered);
-        _state.Declare(RobotState.Discovered, () => (_torqueEnabled, _homed) = (false, false), RobotState.Homing, RobotState.Enabled, RobotState.Fault);
-        _state.Declare(RobotState.Homing, () => _torqueEnabled = false, RobotState.Homed, RobotState.Discovered);
-        _state.Declare(RobotState.Homed, () => (_torqueEnabled, _homed) = (false, true), RobotState.Discovered, RobotState.Homing, RobotState.Enabled, RobotState.Fault);
-        _state.Declare(RobotState.Enabled, () => _torqueEnabled = true, RobotState.Discovered, RobotState.Homed, RobotState.Fault);
-        _state.Declare(RobotState.Fault, null, RobotState.Enabled, RobotState.Discovered, RobotState.Homed);
+        ArgumentNullException.ThrowIfNull(motor);
+        return Slot.Run($"homing {motor.Config.FullName}", () => _homing.HomeOne(motor));
     }
 
-    /// <summary>The state motors-off leads to: homed if the robot was homed since it was last discovered.</summary>
-    private RobotState MotorsOffState => _homed ? RobotState.Homed : RobotState.Discovered;
+    /// <summary>Reboots one module (motors off).</summary>
+    public Reply Reboot(byte moduleId) => Slot.Run($"rebooting module {moduleId}", () => _setup.Reboot(moduleId));
 
-    private void SetLatched(RobotFaults fault) => Interlocked.Or(ref _latchedFaults, (int)fault);
+    // --- the cycle ----------------------------------------------------------------------------------------------------
 
-    private void SetLive(RobotFaults fault, bool on)
+    /// <summary>Runs bus cycles on a thread of its own until <see cref="Stop"/> (real links).</summary>
+    public void Start() => Start(static () => { });
+
+    /// <summary>Runs bus cycles on a thread of its own until <see cref="Stop"/>; the thread first runs <paramref name="prologue"/> (e.g. real-time scheduling).</summary>
+    public void Start(Action prologue) => _thread.Start(prologue);
+
+    /// <summary>Stops the bus thread; work still queued for it fails.</summary>
+    public void Stop() => _thread.Stop();
+
+    /// <summary>True while the bus thread runs (it ends on <see cref="Stop"/>).</summary>
+    public bool IsRunning => _thread.IsRunning;
+
+    /// <summary>
+    /// Runs bus cycles on the calling thread, which owns the bus meanwhile, until <paramref name="duration"/> has passed
+    /// on the client's clock (a virtual bus advances its simulated clock as the cycles wait for bytes).
+    /// </summary>
+    public void RunFor(TimeSpan duration)
     {
-        if (on)
+        using var own = OwnBus();
+        var target = _time.GetTimestamp() + (long)(duration.TotalSeconds * _time.TimestampFrequency);
+        Span<byte> idle = stackalloc byte[16];
+        while (_time.GetTimestamp() < target)
         {
-            Interlocked.Or(ref _liveFaults, (int)fault);
-        }
-        else
-        {
-            Interlocked.And(ref _liveFaults, ~(int)fault);
-        }
-    }
-
-    private static int IndexOf(RobotDefinition robot, ActuatorDefinition actuator)
-    {
-        for (var i = 0; i < robot.Actuators.Count; i++)
-        {
-            if (ReferenceEquals(robot.Actuators[i], actuator))
+            if (!_roster.Active.Any)
             {
-                return i;
+                // Nothing to talk to: let the time pass on the link (a virtual bus simulates meanwhile).
+                var left = target - _time.GetTimestamp();
+                _client.Link.Read(idle, TimeSpan.FromSeconds(left / (double)_time.TimestampFrequency));
+                RunBetweenCycles();
+                continue;
             }
-        }
 
-        return -1;
+            RunCycle();
+        }
     }
 
-    private sealed record FeedbackGroup(RobotController[] Controllers, byte[] Ids, int Length, ArraySegment<byte> Data, ArraySegment<Reply> Replies);
+    /// <summary>One cycle: write, read, publish, check, then one piece of the work between cycles.</summary>
+    public void RunCycle()
+    {
+        Write();
+        Read();
+        Publish();
+        Check();
+        RunBetweenCycles();
+    }
+
+    /// <inheritdoc />
+    public void Write() => _goals.Write();
+
+    /// <inheritdoc />
+    public void Read() => _feedback.Read();
+
+    /// <inheritdoc />
+    public void Publish()
+    {
+        _feedback.Publish(_faults);
+        var cycle = Interlocked.Increment(ref _cycles);
+        _modules.AfterPublish(cycle, _feedback.Alert);
+    }
+
+    /// <inheritdoc />
+    public void Check() => CycleCheck?.Check();
+
+    /// <inheritdoc />
+    public void RunBetweenCycles() => Slot.RunNext();
+
+    /// <inheritdoc />
+    public IDisposable OwnBus() => Slot.Own();
+
+    /// <summary>A failed cycle (the link said <paramref name="ex"/>): an event, and the bus degraded until a cycle succeeds.</summary>
+    internal void CycleFailed(IOException ex)
+    {
+        Events.Publish(new BusError(ex.Message));
+        _faults.SetLive(RobotFaults.BusDegraded, true);
+    }
+
+    // --- the control loop's side (IRobotPort) ---------------------------------------------------------------------
+
+    /// <inheritdoc />
+    public void WriteJointSetpoints(int arm, ReadOnlySpan<double> jointsRad) => _setpoints.WriteJoints(arm, jointsRad);
+
+    /// <inheritdoc />
+    public void WriteJawSetpoint(int arm, double jawRad) => _setpoints.WriteJaw(arm, jawRad);
+
+    /// <inheritdoc />
+    public void ReadJointPositions(int arm, Span<double> jointsRad) => _feedback.ReadJoints(arm, jointsRad);
+
+    /// <inheritdoc />
+    public void ReadMotorCurrents(int arm, Span<double> currentsA) => _feedback.ReadCurrents(arm, currentsA);
+
+    /// <inheritdoc />
+    public void HoldPosition() => _setpoints.HoldAtFeedback();
+
+    /// <summary>The setpoint exchange (tests watch what the bus thread reads from it).</summary>
+    internal SetpointExchange Setpoints => _setpoints;
+
+    /// <inheritdoc />
+    public void Dispose()
+    {
+        Stop();
+        _client.Dispose();
+    }
 }

@@ -12,6 +12,13 @@ public sealed record BusRobotOptions
     /// </summary>
     public int PotPollCycles { get; init; } = 16;
 
+    /// <summary>
+    /// Read one module's per-motor detail (torque read back, motor errors: two reads) every this many cycles, the
+    /// modules in turn, for a console's bus page (<see cref="RobotMotor.TorqueReadBack"/>, <see cref="RobotMotor.Errors"/>).
+    /// 0: never (a run does not need it).
+    /// </summary>
+    public int DetailPollCycles { get; init; }
+
     /// <summary>Cycles a module may miss in a row before it is reported missing.</summary>
     public int MissingAfterCycles { get; init; } = 3;
 

@@ -2,7 +2,11 @@ using RobotControl.Hardware.Model;
 
 namespace RobotControl.Robot.Bus;
 
-/// <summary>One motor-control module of the robot: its ID, friendly name and motors (named after their joints).</summary>
+/// <summary>
+/// One motor-control module of the robot: its ID, friendly name and motors (named after their joints), and what the bus
+/// thread last found out about it (presence, status, resets, watchdog), which any thread may read.
+/// </summary>
+[WrittenBy(RobotThread.Bus)]
 public sealed class RobotController
 {
     internal RobotController(ModuleDefinition definition, int index)
@@ -46,6 +50,9 @@ public sealed class RobotController
 
     /// <summary>Times this module was seen to reset since the robot was opened.</summary>
     public int Resets { get; internal set; }
+
+    /// <summary>The cause of its last reset seen while connected (the control table's <c>reset_cause</c> code; 0: none).</summary>
+    public int LastResetCause { get; internal set; }
 
     /// <summary>Number of channels the bus exchange covers (highest channel + 1).</summary>
     internal int ChannelSpan => Definition.Motors.Count == 0 ? 1 : Definition.Motors.Max(m => m.Channel) + 1;

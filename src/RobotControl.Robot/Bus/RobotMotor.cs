@@ -5,8 +5,11 @@ namespace RobotControl.Robot.Bus;
 /// <summary>
 /// One motor: named after its joint, with its gear ratio, limits and gain (kept in the module's FRAM), manual jog and
 /// setpoint, and two outputs: position (radians at the axis output) and filtered current (A). Manual commands
-/// override the arm's joint setpoints for this motor until <see cref="ReleaseManual"/>. Thread-safe.
+/// override the arm's joint setpoints for this motor until <see cref="ReleaseManual"/>. Its state is written by the
+/// bus thread (the feedback, and the manual commands, which run between cycles); any thread reads it, and the control
+/// loop asks a manual motor to hold through <see cref="RequestHold"/>, taken up at the next write.
 /// </summary>
+[WrittenBy(RobotThread.Bus)]
 public sealed class RobotMotor
 {
     private double _position;
@@ -15,6 +18,10 @@ public sealed class RobotMotor
     private double _potPosition = double.NaN;
     private double _jogRate;
     private int _manual;
+    private int _holdRequested;
+    private int _pwm;
+    private int _torque = -1;
+    private int _errors = -1;
     private readonly PotCalibrationTable _potCalibration;
 
     internal RobotMotor(MotorConfig config, RobotController controller, int index)
@@ -89,6 +96,18 @@ public sealed class RobotMotor
         Volatile.Write(ref _manual, 1);
     }
 
+    /// <summary>A manual motor stops where it is at the next write (any thread: the loop's hold after a plug-in fault).</summary>
+    public void RequestHold() => Volatile.Write(ref _holdRequested, 1);
+
+    /// <summary>The PWM the module applies, of 255, from the latest feedback.</summary>
+    public int Pwm => Volatile.Read(ref _pwm);
+
+    /// <summary>Torque as the module last read it back (null: not read yet, or it did not answer).</summary>
+    public bool? TorqueReadBack => Volatile.Read(ref _torque) switch { < 0 => null, var t => t != 0 };
+
+    /// <summary>The motor's latched errors as its module last reported them (null: not read yet, or it did not answer).</summary>
+    public HardwareErrors? Errors => Volatile.Read(ref _errors) is var e and >= 0 ? (HardwareErrors)(long)e : null;
+
     /// <summary>Returns the motor to the arm's joint setpoints.</summary>
     public void ReleaseManual()
     {
@@ -102,6 +121,12 @@ public sealed class RobotMotor
     /// <summary>The manual goal for this cycle (advancing a jog by <paramref name="dt"/> seconds).</summary>
     internal double ManualGoal(double dt)
     {
+        if (Volatile.Read(ref _holdRequested) != 0 && Interlocked.Exchange(ref _holdRequested, 0) != 0)
+        {
+            Volatile.Write(ref _jogRate, 0);
+            Volatile.Write(ref _manualSetpoint, Math.Clamp(PositionRad, Config.OutputMinRad, Config.OutputMaxRad));
+        }
+
         var goal = Volatile.Read(ref _manualSetpoint);
         var rate = Volatile.Read(ref _jogRate);
         if (rate != 0)
@@ -126,6 +151,16 @@ public sealed class RobotMotor
         {
             Volatile.Write(ref _potPosition, Config.ToRadians(_potCalibration.PositionAt(raw)));
         }
+    }
+
+    internal void PublishTorque(bool? on) => Volatile.Write(ref _torque, on is null ? -1 : on.Value ? 1 : 0);
+
+    internal void PublishErrors(HardwareErrors? errors) => Volatile.Write(ref _errors, errors is { } e ? e.Value : -1);
+
+    internal void Publish(double positionRad, double currentA, int pwm)
+    {
+        Volatile.Write(ref _pwm, pwm);
+        Publish(positionRad, currentA);
     }
 
     internal void Publish(double positionRad, double currentA)

@@ -44,6 +44,7 @@ public sealed class RobotNode : Plugin
     private bool _pedalWired;
     private bool _estopWired;
     private IRobotPort? _port;
+    private IOperatorPort? _operator;
     private long _rejected;
 
     /// <summary>Creates the robot's node from its definition; attach a port with <see cref="Attach"/> before starting.</summary>
@@ -99,8 +100,11 @@ public sealed class RobotNode : Plugin
     /// <summary>Setpoint vectors refused because they held a non-finite value.</summary>
     public long RejectedSetpoints => Volatile.Read(ref _rejected);
 
-    /// <summary>Attaches the robot's port (before the graph starts).</summary>
-    public void Attach(IRobotPort port)
+    /// <summary>
+    /// Attaches the robot's port and, when a safety supervisor watches the robot, the operator's port (before the graph
+    /// starts): pedals and input ages go to <paramref name="operatorPort"/>; without one, teleoperation is always allowed.
+    /// </summary>
+    public void Attach(IRobotPort port, IOperatorPort? operatorPort = null)
     {
         ArgumentNullException.ThrowIfNull(port);
         if (port.ArmCount != _robot.Arms.Count)
@@ -109,6 +113,7 @@ public sealed class RobotNode : Plugin
         }
 
         _port = port;
+        _operator = operatorPort;
     }
 
     /// <summary>The joint setpoints written for <paramref name="arm"/> on the last tick (valid when <see cref="CommandedThisTick"/>).</summary>
@@ -150,23 +155,26 @@ public sealed class RobotNode : Plugin
             }
         }
 
-        for (var a = 0; a < _inputAges.Length; a++)
+        if (_operator is { } op)
         {
-            port.ReportInputAge(a, Read(_inputAges[a]));
-        }
+            for (var a = 0; a < _inputAges.Length; a++)
+            {
+                op.ReportInputAge(a, Read(_inputAges[a]));
+            }
 
-        if (_pedalWired)
-        {
-            port.ReportPedal(Read(_pedal) >= 0.5);
-        }
+            if (_pedalWired)
+            {
+                op.ReportPedal(Read(_pedal) >= 0.5);
+            }
 
-        if (_estopWired)
-        {
-            port.ReportEmergencyStop(Read(_estop) >= 0.5);
+            if (_estopWired)
+            {
+                op.ReportEmergencyStop(Read(_estop) >= 0.5);
+            }
         }
 
         Write(_faults, (int)port.Faults);
-        Write(_teleopEnabled, port.TeleopAllowed && !UpstreamFaulted ? 1 : 0);
+        Write(_teleopEnabled, (_operator?.TeleopAllowed ?? true) && !UpstreamFaulted ? 1 : 0);
         if (UpstreamFaulted)
         {
             if (!Holding)

@@ -15,7 +15,7 @@ public sealed class SessionLoopCodeTests
     public static TheoryData<Type, string> Loops => new()
     {
         { typeof(ControlLoop), "ThreadMain" },
-        { typeof(BusRobot), "Loop" },
+        { typeof(BusRobot).Assembly.GetType("RobotControl.Robot.Bus.BusThread", throwOnError: true)!, "Loop" },
         { typeof(VirtualRobot), nameof(VirtualRobot.Serve) },
     };
 

@@ -55,7 +55,7 @@ public sealed class FaultTests
 
         Assert.True(lb.Robot.Faults.HasFlag(RobotFaults.ModuleReset));
         Assert.Equal(1, lb.Robot.Controller(2)!.Resets);
-        var reset = Assert.Single(lb.Robot.Events.OfType<ModuleResetEvent>());
+        var reset = Assert.Single(lb.Robot.Events.History().OfType<ModuleResetEvent>());
         Assert.Equal((byte)2, reset.ModuleId);
         Assert.Equal("brown-out", reset.Cause);
         Assert.True(reset.ResumedFromFram);

@@ -14,12 +14,12 @@ public sealed class RobotEventTests
     public void A_discovery_problem_is_one_typed_event_per_finding()
     {
         using var lb = new VirtualLb(hostView: VirtualLb.MisconfiguredHostView());
-        var problems = lb.Robot.Events.OfType<DiscoveryProblemEvent>().Select(e => e.Problem).ToList();
+        var problems = lb.Robot.Events.History().OfType<DiscoveryProblemEvent>().Select(e => e.Problem).ToList();
         Assert.Equal(lb.Discovery!.Problems, problems);
         var missing = Assert.Single(problems, p => p.Kind == DiscoveryProblemKind.Missing);
         Assert.Equal((byte)20, missing.ModuleId);
         Assert.Equal([(byte)3, (byte)13], problems.Where(p => p.Kind == DiscoveryProblemKind.Unknown).Select(p => p.ModuleId!.Value).Order());
-        Assert.DoesNotContain(lb.Robot.Events, e => e.Message.StartsWith("found", StringComparison.Ordinal));
+        Assert.DoesNotContain(lb.Robot.Events.History(), e => e.Message.StartsWith("found", StringComparison.Ordinal));
         Assert.Equal(lb.Discovery.Lines().Where(l => !l.StartsWith("found", StringComparison.Ordinal)), problems.Select(p => p.Line));
     }
 

@@ -83,7 +83,7 @@ public sealed class RobotNodeTests
     {
         var port = new KinematicRobotPort(Repo.Lb);
         var node = new RobotNode(Repo.Lb, TimeProvider.System, Repo.Root);
-        node.Attach(port);
+        node.Attach(port, port);
         var graph = new PluginGraph();
         graph.Add(node);
         graph.Add(new ElbowSource(throwAt));

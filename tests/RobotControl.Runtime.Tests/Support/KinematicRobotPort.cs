@@ -3,8 +3,8 @@ using RobotControl.Robot.Control;
 
 namespace RobotControl.Runtime.Tests.Support;
 
-/// <summary>Test double: an ideal robot whose joints are wherever they were last commanded.</summary>
-internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort
+/// <summary>Test double: an ideal robot whose joints are wherever they were last commanded, and an operator port whose run level the test sets.</summary>
+internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort, IOperatorPort
 {
     private readonly double[][] _joints = [.. robot.Arms.Select(_ => robot.Joints.Select(j => j.MidRad).ToArray())];
 
@@ -43,6 +43,18 @@ internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort
 
     public void HoldPosition() => Holds++;
 
-    /// <summary>What <see cref="IRobotPort.TeleopAllowed"/> answers (a supervisor's run level).</summary>
+    /// <summary>What <see cref="IOperatorPort.TeleopAllowed"/> answers (a supervisor's run level).</summary>
     public bool TeleopAllowed { get; set; } = true;
+
+    public void ReportInputAge(int arm, double ageMs)
+    {
+    }
+
+    public void ReportPedal(bool down)
+    {
+    }
+
+    public void ReportEmergencyStop(bool pressed)
+    {
+    }
 }

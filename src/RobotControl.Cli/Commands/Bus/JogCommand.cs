@@ -48,7 +48,7 @@ internal sealed class JogCommand : ICliCommand
                 bus.RunFor(TimeSpan.FromMilliseconds(300));
                 bus.EnableTorque(false);
                 output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{m.Config.FullName}: {start / Deg:F2} deg -> {m.PositionRad / Deg:F2} deg, current {m.CurrentA * 1000:F1} mA, faults {bus.Faults}"));
-                foreach (var e in bus.Events)
+                foreach (var e in bus.Events.History())
                 {
                     output.WriteLine(e);
                 }

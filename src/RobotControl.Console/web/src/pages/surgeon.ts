@@ -73,7 +73,7 @@ export function surgeonPage(root: HTMLElement): () => void {
       level.dataset.level = status.status.robotState;
       levelNote.textContent = note;
       operator = status.operator.you;
-      role.textContent = operator ? '' : 'Watching: take the operator role (top right) to use E-STOP and change the scale.';
+      role.textContent = operator ? '' : 'Watching: E-STOP works from here; take the operator role (top right) to change the scale.';
       faults.show(surgeon.faults);
       hands?.refresh(surgeon.hands);
     } catch {

@@ -1,0 +1,221 @@
+using System.Buffers.Binary;
+using RobotControl.Bus.Client;
+
+namespace RobotControl.Robot.Bus;
+
+/// <summary>
+/// The cycle's <b>write</b> step: the latest setpoints become motor goals (couplings, manual commands, joint limits;
+/// the measured positions while torque is off), under the hold and the step cap, sent to every module in one sync
+/// write. Written by the bus thread alone. Other threads ask, lock-free, for what the next write takes up first: a
+/// hold (<see cref="HoldAtMeasured"/>), the motors off (<see cref="RequestTorqueOff"/>), faults cleared
+/// (<see cref="RequestClear"/>); a supervisor's action therefore reaches the wire at the next write, never from inside
+/// the check.
+/// </summary>
+[WrittenBy(RobotThread.Bus)]
+internal sealed class GoalWriter
+{
+    private const double StepCapToleranceRad = 1e-9;
+    private readonly RobotLayout _layout;
+    private readonly BusClient _client;
+    private readonly ModuleRoster _roster;
+    private readonly SetpointExchange _setpoints;
+    private readonly FeedbackExchange _feedback;
+    private readonly GoalSeed _seed;
+    private readonly RobotLifecycle _life;
+    private readonly TimeProvider _time;
+    private readonly BusInterruption _stop;
+    private readonly double[] _goals;
+    private readonly double[] _sent;
+    private readonly double[] _held;
+    private readonly double[] _q;
+    private readonly double[] _a;
+    private readonly double[] _jaw = new double[1];
+    private long _lastWrite;
+    private bool _capPrimed;
+    private volatile int _hold; // 0: none, 1: asked (captured at the next write), 2: holding
+    private volatile string? _torqueOffRequest;
+    private volatile bool _clearRequested;
+    private long _stepCapHits;
+    private double _largestCappedStep;
+
+    public GoalWriter(RobotLayout layout, BusClient client, ModuleRoster roster, SetpointExchange setpoints, FeedbackExchange feedback, GoalSeed seed, RobotLifecycle life, BusInterruption stop)
+    {
+        _stop = stop;
+        _layout = layout;
+        _client = client;
+        _roster = roster;
+        _setpoints = setpoints;
+        _feedback = feedback;
+        _seed = seed;
+        _life = life;
+        _time = client.Time;
+        _goals = new double[layout.Motors.Length];
+        _sent = [.. layout.Motors.Select(m => m.PositionRad)];
+        _held = new double[layout.Motors.Length];
+        _q = new double[layout.JointCount];
+        _a = new double[layout.JointCount];
+    }
+
+    /// <summary>Runs before the goals are made, on the bus thread: a requested torque-off, then a requested clear.</summary>
+    public Action<string>? TorqueOff { get; set; }
+
+    /// <summary>Clears the faults in the modules (the module supervisor's), on the bus thread.</summary>
+    public Action? Clear { get; set; }
+
+    public long StepCapHits => Interlocked.Read(ref _stepCapHits);
+
+    public double LargestCappedStepRad => Volatile.Read(ref _largestCappedStep);
+
+    public bool IsHolding => _hold != 0;
+
+    /// <summary>True once a write has made goals (<see cref="SentGoal"/> means something).</summary>
+    public bool HasWritten => Volatile.Read(ref _capPrimed);
+
+    public bool TorqueOffPending => _torqueOffRequest is not null;
+
+    /// <summary>Freezes every goal at its measured position from the next write on (any thread).</summary>
+    public void HoldAtMeasured() => Interlocked.CompareExchange(ref _hold, 1, 0);
+
+    /// <summary>The setpoints drive the goals again, each still under the step cap (any thread).</summary>
+    public void ReleaseHold() => _hold = 0;
+
+    /// <summary>The motors go off at the next write (any thread); <paramref name="reason"/> is the state change's.</summary>
+    public void RequestTorqueOff(string reason) => _torqueOffRequest = reason;
+
+    /// <summary>Faults are cleared at the next write (any thread).</summary>
+    public void RequestClear() => _clearRequested = true;
+
+    /// <summary>
+    /// An emergency stop's action (any thread, lock-free): hold, and with <paramref name="torqueOff"/> the motors off, at
+    /// the next write; until that write, the work between cycles is cut short and none starts (<see cref="BetweenCycles"/>).
+    /// </summary>
+    public void EmergencyHold(string reason, bool torqueOff)
+    {
+        HoldAtMeasured();
+        if (torqueOff)
+        {
+            RequestTorqueOff(reason);
+        }
+
+        _stop.Raise(reason);
+    }
+
+    /// <summary>The goal last sent to motor <paramref name="index"/>, output radians.</summary>
+    public double SentGoal(int index) => Volatile.Read(ref _sent[index]);
+
+    /// <summary>Cycle step <b>write</b>.</summary>
+    public void Write()
+    {
+        var now = _time.GetTimestamp();
+        var dt = _lastWrite == 0 ? 0 : (now - _lastWrite) / (double)_time.TimestampFrequency;
+        _lastWrite = now;
+        _stop.Clear(); // a stop raised from here on is taken by this write or the next; its requests were made before it was raised
+        if (_torqueOffRequest is { } reason)
+        {
+            _torqueOffRequest = null;
+            TorqueOff?.Invoke(reason);
+        }
+
+        if (_clearRequested)
+        {
+            _clearRequested = false;
+            Clear?.Invoke();
+        }
+
+        ComputeGoals(dt);
+        CapAndHold(dt);
+        var active = _roster.Active;
+        if (!active.Any)
+        {
+            return;
+        }
+
+        var data = active.WriteData;
+        for (var i = 0; i < active.Controllers.Length; i++)
+        {
+            foreach (var m in active.Controllers[i].MotorArray)
+            {
+                BinaryPrimitives.WriteInt32LittleEndian(data.AsSpan((i * _layout.GoalLength) + (m.Config.Channel * _layout.GoalStride)), m.Config.ToCounts(_goals[m.Index]));
+            }
+        }
+
+        _client.SyncWrite(_layout.GoalAddress, _layout.GoalLength, active.Ids, data);
+    }
+
+    private void ComputeGoals(double dt)
+    {
+        for (var arm = 0; arm < _layout.ArmCount; arm++)
+        {
+            _seed.Joints(_setpoints, arm, _q);
+            _layout.Map.JointsToActuators(_q, _a);
+            var motors = _layout.MotorOf[arm];
+            var kinematic = _layout.KinematicActuator;
+            for (var k = 0; k < kinematic.Length; k++)
+            {
+                if (motors[kinematic[k]] is { } m)
+                {
+                    _goals[m.Index] = _a[k];
+                }
+            }
+
+            if (_layout.ToolMotor(arm) is { } tool)
+            {
+                _goals[tool.Index] = _seed.Jaw(_setpoints, arm, _jaw);
+            }
+        }
+
+        var torque = _life.TorqueEnabled;
+        foreach (var m in _layout.Motors)
+        {
+            var goal = m.IsManual ? m.ManualGoal(dt) : _goals[m.Index];
+            if (!torque && !m.IsManual)
+            {
+                goal = m.PositionRad; // torque off: keep the modules' goals on their positions
+            }
+
+            // Joint limits again at the motor (the firmware clamps a third time).
+            _goals[m.Index] = Math.Clamp(goal, m.Config.OutputMinRad, m.Config.OutputMaxRad);
+        }
+    }
+
+    /// <summary>The hold and the step cap (no goal moves further in one write than the motor's speed limit times the time since the last).</summary>
+    private void CapAndHold(double dt)
+    {
+        if (_hold == 1)
+        {
+            foreach (var m in _layout.Motors)
+            {
+                _held[m.Index] = Math.Clamp(m.PositionRad, m.Config.OutputMinRad, m.Config.OutputMaxRad);
+            }
+
+            Interlocked.CompareExchange(ref _hold, 2, 1);
+        }
+
+        var holding = _hold == 2;
+        var torque = _life.TorqueEnabled;
+        foreach (var m in _layout.Motors)
+        {
+            var i = m.Index;
+            var goal = holding && torque ? _held[i] : _goals[i];
+            if (_capPrimed && torque && dt > 0)
+            {
+                var cap = BusRobot.StepCapRad(m, dt);
+                var step = goal - _sent[i];
+                if (Math.Abs(step) > cap + StepCapToleranceRad)
+                {
+                    goal = _sent[i] + Math.CopySign(cap, step);
+                    Interlocked.Increment(ref _stepCapHits);
+                    if (Math.Abs(step) > _largestCappedStep)
+                    {
+                        Volatile.Write(ref _largestCappedStep, Math.Abs(step));
+                    }
+                }
+            }
+
+            _goals[i] = goal;
+            Volatile.Write(ref _sent[i], goal);
+        }
+
+        Volatile.Write(ref _capPrimed, true);
+    }
+}
