@@ -13,6 +13,7 @@ mkdir -p "$out"
 
 # production project : its test project (the mirrored one)
 targets=(
+  "Hardware:tests/RobotControl.Hardware.Tests"
   "Kinematics:tests/RobotControl.Kinematics.Tests"
   "Bus:tests/RobotControl.Bus.Tests"
   "Robot:tests/RobotControl.Robot.Tests"

@@ -21,7 +21,7 @@ public sealed class MotorConfig
         ArmName = robot.Arms[module.Arm].Name;
         Actuator = robot.Actuators[motor.ActuatorIndex];
         ActuatorIndex = motor.ActuatorIndex;
-        Name = Actuator.IsKinematic ? robot.Joints[Actuator.JointIndex].Name : Actuator.Name;
+        Name = MotorName.Of(Actuator, robot.Joints);
         GearRatio = Actuator.Drivetrain.TotalRatio;
         CountsPerRad = motor.HallCountsPerRev * GearRatio / (2 * Math.PI);
         RawPerAmp = 4095.0 / module.CurrentSenseFullScaleA;
@@ -56,7 +56,7 @@ public sealed class MotorConfig
     public string Name { get; }
 
     /// <summary><c>arm.name</c>, unique in the robot.</summary>
-    public string FullName => $"{ArmName}.{Name}";
+    public string FullName => MotorName.Full(ArmName, Name);
 
     /// <summary>Total reduction motor to axis output.</summary>
     public double GearRatio { get; }

@@ -18,10 +18,7 @@ internal static class DependencyGraph
     /// <summary>The Markdown block (markers included) for the project files as they are now.</summary>
     public static string Generate()
     {
-        var projects = new[] { "src", "plugins" }
-            .SelectMany(folder => Directory.EnumerateFiles(RepositoryPaths.Of(folder), "*.csproj", SearchOption.AllDirectories))
-            .Where(p => !p.Contains($"{Path.DirectorySeparatorChar}obj{Path.DirectorySeparatorChar}", StringComparison.Ordinal))
-            .ToDictionary(p => Path.GetFileNameWithoutExtension(p), References, StringComparer.Ordinal);
+        var projects = ProductionProjectFiles().ToDictionary(p => Path.GetFileNameWithoutExtension(p), References, StringComparer.Ordinal);
 
         var text = new StringBuilder();
         text.Append(Begin).Append('\n');
@@ -44,6 +41,12 @@ internal static class DependencyGraph
         text.Append(End);
         return text.ToString();
     }
+
+    /// <summary>The full paths of the production projects: every <c>.csproj</c> under <c>src/</c> and <c>plugins/</c>.</summary>
+    public static IEnumerable<string> ProductionProjectFiles() =>
+        new[] { "src", "plugins" }
+            .SelectMany(folder => Directory.EnumerateFiles(RepositoryPaths.Of(folder), "*.csproj", SearchOption.AllDirectories))
+            .Where(p => !p.Contains($"{Path.DirectorySeparatorChar}obj{Path.DirectorySeparatorChar}", StringComparison.Ordinal));
 
     /// <summary>The block currently in <paramref name="document"/>, or null when the markers are missing.</summary>
     public static string? Current(string document)

@@ -2,6 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Runtime;
 using System.Text.Json;
+using RobotControl.Hardware.Model;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Plugins;
 using RobotControl.Host.Realtime;

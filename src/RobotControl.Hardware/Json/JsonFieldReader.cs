@@ -128,15 +128,22 @@ public sealed class JsonFieldReader
     }
 
     /// <summary>A required whole number within min..max (min when absent or invalid).</summary>
-    public int Integer(string name, int min, int max)
+    public int Integer(string name, int min, int max) => IntegerOrNull(name, min, max) ?? min;
+
+    /// <summary>A whole number within min..max (not null), or null when absent (reported when required) or not a number.</summary>
+    public int? IntegerOrNull(string name, int min, int max, bool required = true)
     {
-        var value = Number(name, min, max);
-        if (double.IsFinite(value) && value != Math.Floor(value))
+        if (NumberOrNull(name, min, max, required, allowNull: false) is not { } value || !double.IsFinite(value))
+        {
+            return null;
+        }
+
+        if (value != Math.Floor(value))
         {
             Sink.Add(FieldPath(name), $"is {value}; must be a whole number");
         }
 
-        return double.IsFinite(value) ? (int)value : min;
+        return (int)value;
     }
 
     /// <summary>Reads <paramref name="v"/> as a 32-bit integer; null (and a problem) otherwise.</summary>

@@ -21,7 +21,7 @@ internal static class ModuleSectionReader
 
         var sink = section.Sink;
         var baud = section.Integer("baud", 9600, 20_000_000);
-        var watchdog = section.Integer("watchdog_ms", 1, 60_000);
+        var watchdog = section.Integer("watchdog_ms", 0, 60_000); // 0 (off) is refused against the safety section (SafetySectionReader)
         var returnDelay = section.Integer("return_delay_us", 0, 508);
         var modules = new List<ModuleDefinition>();
         var ids = new HashSet<int>();

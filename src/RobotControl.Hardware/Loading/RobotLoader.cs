@@ -140,12 +140,12 @@ public static partial class RobotLoader
         analysis?.RejectUnknownFields();
         var requirements = ReadRequirements(r.Object("requirements"), sink);
         var modules = ModuleSectionReader.Read(r, actuators, arms);
-        _ = r.Raw("safety", required: false); // the safety supervisor's thresholds: read by the session layer (RobotControl.Host.Safety.SafetySection)
+        var safety = SafetySectionReader.Read(r, modules, SafetySectionReader.MotorNames(modules, arms, actuators, joints));
         r.RejectUnknownFields();
 
         RobotDataException.ThrowIfAny(sink);
         return new RobotDefinition(
             name, description, file, crossSectionArea, joints, dh, positionJoints, actuators, tool!, arms,
-            mirror!.Value, crossSection!, requirements!, motors, gearheads) { Modules = modules };
+            mirror!.Value, crossSection!, requirements!, motors, gearheads) { Modules = modules, Safety = safety };
     }
 }

@@ -89,6 +89,9 @@ public sealed class RobotDefinition
     /// <summary>The motor-control modules and bus settings (the file's <c>modules</c> section; empty without one).</summary>
     public ModuleLayout Modules { get; internal init; } = ModuleLayout.Empty;
 
+    /// <summary>The safety supervisor's thresholds and safe states (the file's <c>safety</c> section; the defaults without one).</summary>
+    public SafetyLimits Safety { get; internal init; } = new();
+
     /// <summary>Number of kinematic joints.</summary>
     public int JointCount => Joints.Count;
 

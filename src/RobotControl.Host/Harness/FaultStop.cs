@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Model;
 using RobotControl.Host.Safety;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;

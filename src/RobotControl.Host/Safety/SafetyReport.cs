@@ -1,4 +1,5 @@
 using System.Text.Json;
+using RobotControl.Hardware.Model;
 
 namespace RobotControl.Host.Safety;
 

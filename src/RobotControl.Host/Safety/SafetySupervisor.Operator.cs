@@ -1,4 +1,5 @@
 using System.Globalization;
+using RobotControl.Hardware.Model;
 using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;

@@ -104,9 +104,7 @@ public sealed class RobotSession : IDisposable
         {
             var bus = connection.Robot!;
             var discovery = bus.Discover();
-            var limits = SafetySection.Load(robot.SourceFile, [.. bus.Motors.Select(m => m.Config.FullName)]);
-            SafetySection.CheckWatchdog(limits, robot.Modules.WatchdogMs, robot.SourceFile);
-            var supervisor = new SafetySupervisor(bus, limits, TimeSpan.FromSeconds(1.0 / loaded.Document.LoopRateHz));
+            var supervisor = new SafetySupervisor(bus, robot.Safety, TimeSpan.FromSeconds(1.0 / loaded.Document.LoopRateHz));
             if (options.Virtual)
             {
                 supervisor.Home("session"); // a real session homes and arms the modules in StartRealtime, once the cycle runs at rate

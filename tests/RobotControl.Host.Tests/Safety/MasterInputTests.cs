@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Model;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Safety;
 

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Model;
 using RobotControl.Host.Plugins;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;

@@ -1,3 +1,4 @@
+using RobotControl.Hardware.Model;
 using RobotControl.Host.Safety;
 
 namespace RobotControl.Host.Tests.Safety;

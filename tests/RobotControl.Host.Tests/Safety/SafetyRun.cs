@@ -1,4 +1,5 @@
 using RobotControl.Bus.Protocol;
+using RobotControl.Hardware.Model;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Plugins;
 using RobotControl.Host.Safety;

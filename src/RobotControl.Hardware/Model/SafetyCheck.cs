@@ -1,4 +1,4 @@
-namespace RobotControl.Host.Safety;
+namespace RobotControl.Hardware.Model;
 
 /// <summary>The per-cycle checks of the safety supervisor.</summary>
 public enum SafetyCheck
@@ -66,13 +66,3 @@ public static class SafetyNames
     /// <summary><c>hold</c> or <c>torque_off</c>.</summary>
     public static string Name(this SafeState state) => state == SafeState.Hold ? "hold" : "torque_off";
 }
-
-/// <summary>One trip.</summary>
-/// <param name="Timestamp">When it was detected, on the supervisor's clock.</param>
-/// <param name="Check">Which check.</param>
-/// <param name="Joint">The motor or module concerned (e.g. <c>right.elbow</c>), or empty.</param>
-/// <param name="Measured">The value measured (unit in <paramref name="Unit"/>).</param>
-/// <param name="Limit">The limit it crossed.</param>
-/// <param name="Unit">Unit of the value and the limit.</param>
-/// <param name="Action">The safe state taken.</param>
-public sealed record SafetyTrip(long Timestamp, SafetyCheck Check, string Joint, double Measured, double Limit, string Unit, SafeState Action);

@@ -1,11 +1,12 @@
 using System.Diagnostics;
 using System.Globalization;
+using RobotControl.CoppeliaSim.Tests;
 using RobotControl.Plugins.CoppeliaSim;
 using RobotControl.Runtime.GraphFiles;
 using RobotControl.Host.Harness;
 using RobotControl.Runtime.Loop;
 
-namespace RobotControl.CoppeliaSim.Tests.Plugin;
+namespace RobotControl.Plugins.CoppeliaSim.Tests;
 
 public sealed class CoppeliaSimPluginTests
 {

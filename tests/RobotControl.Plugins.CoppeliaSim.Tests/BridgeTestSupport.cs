@@ -5,7 +5,7 @@ using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
 
-namespace RobotControl.CoppeliaSim.Tests.Plugin;
+namespace RobotControl.Plugins.CoppeliaSim.Tests;
 
 /// <summary>The repository, the LB-1.0 robot, the host's plug-in catalogue and the default scene paths of its joints.</summary>
 internal static class BridgeTestSupport

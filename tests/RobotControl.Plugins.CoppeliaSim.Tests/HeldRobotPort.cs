@@ -1,7 +1,7 @@
 using RobotControl.Hardware.Model;
 using RobotControl.Robot.Control;
 
-namespace RobotControl.CoppeliaSim.Tests.Plugin;
+namespace RobotControl.Plugins.CoppeliaSim.Tests;
 
 /// <summary>A robot port that keeps the setpoints it is given and reports them as positions (no bus).</summary>
 internal sealed class HeldRobotPort(RobotDefinition robot) : IRobotPort

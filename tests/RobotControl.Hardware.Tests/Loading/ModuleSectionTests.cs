@@ -1,8 +1,7 @@
 using System.Text.Json.Nodes;
 using RobotControl.Hardware.Loading;
-using RobotControl.TestSupport;
 
-namespace RobotControl.Robot.Tests.Modules;
+namespace RobotControl.Hardware.Tests.Loading;
 
 public sealed class ModuleSectionTests
 {
@@ -11,7 +10,7 @@ public sealed class ModuleSectionTests
     {
         foreach (var file in new[] { "lb-1.0.json", "crb-1.0.json" })
         {
-            var robot = RobotLoader.Load(RepositoryPaths.Robot(file));
+            var robot = RobotLoader.Load(RobotFiles.Shipped(file));
             Assert.Equal(6, robot.Modules.Modules.Count);
             Assert.Equal([1, 2, 3, 11, 12, 13], robot.Modules.Modules.Select(m => (int)m.Id));
             Assert.Equal(robot.Actuators.Count * 2, robot.Modules.Modules.Sum(m => m.Motors.Count));
@@ -22,7 +21,7 @@ public sealed class ModuleSectionTests
     [Fact]
     public void Errors_name_the_field_by_its_JSON_path()
     {
-        var json = JsonNode.Parse(File.ReadAllText(RepositoryPaths.Robot("lb-1.0.json")))!;
+        var json = RobotFiles.Json("lb-1.0.json");
         var layout = json["modules"]!["layout"]!.AsArray();
         layout[1]!["id"] = 1;                                   // duplicate
         layout[2]!["arm"] = "middle";                           // no such arm
@@ -31,7 +30,7 @@ public sealed class ModuleSectionTests
         layout[4]!["motors"]![0]!["pot"]!["bow_counts"] = 2000; // not monotonic
         layout[5]!["motors"]![0]!["speed_limit_deg_s"] = null;
 
-        var ex = Assert.Throws<RobotDataException>(() => RobotLoader.LoadFromText(json.ToJsonString(), RepositoryPaths.Robot("bad.json")));
+        var ex = Assert.Throws<RobotDataException>(() => RobotLoader.LoadFromText(json.ToJsonString(), RobotFiles.Shipped("bad.json")));
         var paths = ex.Errors.Select(e => e.Path).ToArray();
         Assert.Contains("$.modules.layout[1].id", paths);
         Assert.Contains("$.modules.layout[2].arm", paths);

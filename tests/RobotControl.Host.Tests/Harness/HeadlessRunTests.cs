@@ -2,21 +2,20 @@ using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Host.Harness;
-using RobotControl.Runtime.Tests.Support;
 
-namespace RobotControl.Runtime.Tests.Harness;
+namespace RobotControl.Host.Tests.Harness;
 
 public sealed class HeadlessRunTests
 {
     private static PluginCatalog Catalog() => PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
 
     [Theory]
-    [InlineData("graphs/teleop-lb.json")]
-    [InlineData("graphs/teleop-crb.json")]
+    [InlineData("teleop-lb.json")]
+    [InlineData("teleop-crb.json")]
     public void The_teleoperation_demo_tracks_on_the_virtual_robot_without_deadline_misses(string graph)
     {
         // 8 s covers the circle (60 mm/s at the tool), a clutch press and most of the figure-eight (up to 70 mm/s).
-        var report = HeadlessRun.Run(new RunOptions { GraphPath = Repo.Path(graph), Duration = TimeSpan.FromSeconds(8) }, Catalog());
+        var report = HeadlessRun.Run(new RunOptions { GraphPath = Graphs.Path(graph), Duration = TimeSpan.FromSeconds(8) }, Catalog());
 
         Assert.Equal(8000, report.Ticks);
         Assert.Equal(0, report.DeadlineMisses);
@@ -73,15 +72,15 @@ public sealed class HeadlessRunTests
 public sealed class ShippedGraphTests
 {
     [Theory]
-    [InlineData("graphs/teleop-lb.json", 5)]
-    [InlineData("graphs/teleop-crb.json", 4)]
-    [InlineData("graphs/teleop-lb-touch.json", 5)]
+    [InlineData("teleop-lb.json", 5)]
+    [InlineData("teleop-crb.json", 4)]
+    [InlineData("teleop-lb-touch.json", 5)]
     public void The_shipped_graphs_load_save_back_identically_and_start_where_the_virtual_robot_rests(string graph, int joints)
     {
         var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
-        var loaded = RobotControl.Runtime.GraphFiles.GraphFile.Load(Repo.Path(graph), catalog, TimeProvider.System);
+        var loaded = RobotControl.Runtime.GraphFiles.GraphFile.Load(Graphs.Path(graph), catalog, TimeProvider.System);
         var saved = RobotControl.Runtime.GraphFiles.GraphFile.ToJson(loaded.Document);
-        var reloaded = RobotControl.Runtime.GraphFiles.GraphFile.LoadFromText(saved, Repo.Path(graph), catalog, TimeProvider.System);
+        var reloaded = RobotControl.Runtime.GraphFiles.GraphFile.LoadFromText(saved, Graphs.Path(graph), catalog, TimeProvider.System);
 
         Assert.Equal(saved, RobotControl.Runtime.GraphFiles.GraphFile.ToJson(reloaded.Document));
         Assert.Equal(loaded.Document.Instances, reloaded.Document.Instances);

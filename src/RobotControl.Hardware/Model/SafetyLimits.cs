@@ -1,8 +1,8 @@
-namespace RobotControl.Host.Safety;
+namespace RobotControl.Hardware.Model;
 
 /// <summary>
-/// Thresholds of the safety checks and the safe state of each, from the robot file's optional <c>safety</c> section
-/// (<see cref="SafetySection"/>); every field has a default.
+/// Thresholds of the safety supervisor's checks and the safe state of each: the robot file's optional <c>safety</c>
+/// section, read and validated by the robot loader (<see cref="RobotDefinition.Safety"/>); every field has a default.
 /// </summary>
 public sealed record SafetyLimits
 {

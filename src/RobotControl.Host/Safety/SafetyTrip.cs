@@ -1,0 +1,13 @@
+using RobotControl.Hardware.Model;
+
+namespace RobotControl.Host.Safety;
+
+/// <summary>One trip.</summary>
+/// <param name="Timestamp">When it was detected, on the supervisor's clock.</param>
+/// <param name="Check">Which check.</param>
+/// <param name="Joint">The motor or module concerned (e.g. <c>right.elbow</c>), or empty.</param>
+/// <param name="Measured">The value measured (unit in <paramref name="Unit"/>).</param>
+/// <param name="Limit">The limit it crossed.</param>
+/// <param name="Unit">Unit of the value and the limit.</param>
+/// <param name="Action">The safe state taken.</param>
+public sealed record SafetyTrip(long Timestamp, SafetyCheck Check, string Joint, double Measured, double Limit, string Unit, SafeState Action);
