@@ -1,4 +1,5 @@
 using RobotControl.Plugins.Sdk;
+using RobotControl.Plugins.Sdk.Faults;
 using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Plugins.Sdk.Settings;
 using RobotControl.Plugins.Touch.Backends;
@@ -10,10 +11,11 @@ namespace RobotControl.Plugins.Touch;
 /// inputs a 3-DOF force (N, device frame) to render, normally fed back one tick later from the haptics chain, and
 /// <c>force_enable</c>, the seam for the safety supervisor's run level (below 0.5: no force reaches the device).
 /// <c>sample_age_ms</c> says how old the reading is (the master timeout: wire it to the robot's <c>arm.input_age_ms</c>).
-/// The device itself is behind <see cref="ITouchBackend"/>, chosen by the <c>backend</c> setting.
+/// The device itself is behind <see cref="ITouchBackend"/>, chosen by the <c>backend</c> setting. Injected device
+/// faults (<see cref="IFaultInjectable"/>) go to the back end when it takes them (the simulated one does, the real device does not).
 /// </summary>
 [PluginType("touch", Description = "Geomagic Touch haptic device (back ends: simulated scripted hand, or the real device through OpenHaptics).")]
-public sealed class TouchPlugin : Plugin<TouchSettings>
+public sealed class TouchPlugin : Plugin<TouchSettings>, IFaultInjectable
 {
     private readonly InputPort _fx;
     private readonly InputPort _fy;
@@ -84,6 +86,21 @@ public sealed class TouchPlugin : Plugin<TouchSettings>
 
     /// <inheritdoc />
     public override void Stop() => Backend.Dispose();
+
+    /// <inheritdoc />
+    public bool CanTake(DeviceFaultKind kind) => Backend is IFaultInjectable faults && faults.CanTake(kind);
+
+    /// <inheritdoc />
+    public void Inject(DeviceFault fault)
+    {
+        ArgumentNullException.ThrowIfNull(fault);
+        if (Backend is not IFaultInjectable faults)
+        {
+            throw new ArgumentException($"Touch '{Name}' ({Backend.Description}) cannot take a {fault} fault", nameof(fault));
+        }
+
+        faults.Inject(fault);
+    }
 
     private static Func<TouchSettings, PluginContext, ITouchBackend> Given(ITouchBackend backend)
     {

@@ -8,7 +8,8 @@ namespace RobotControl.Plugins.Touch.Tests;
 
 public sealed class TouchTests
 {
-    private static HandScript Script() => HandScript.Parse(
+    /// <summary>A hand moving 10 mm along x in one second, then at rest at x = 10 mm up to 3 s.</summary>
+    internal static HandScript Script() => HandScript.Parse(
         [
             "# a hand moving 10 mm along x in one second, clutch pressed from 0.5 s",
             "time_s,x_mm,y_mm,z_mm,roll_rad,pitch_rad,yaw_rad,button1,button2",

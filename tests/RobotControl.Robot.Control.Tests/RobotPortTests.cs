@@ -1,24 +1,15 @@
-using RobotControl.Hardware.Model;
-
 namespace RobotControl.Robot.Control.Tests;
 
-/// <summary>The robot port's contract as a port without a safety supervisor sees it, and the fault flags it reports.</summary>
+/// <summary>The robot port's contract (the operator's inputs are not part of it) and the fault flags it reports.</summary>
 public sealed class RobotPortTests
 {
     [Fact]
-    public void A_port_without_a_supervisor_always_allows_teleoperation_and_ignores_input_age_pedal_and_emergency_stop()
+    public void The_robot_port_carries_no_operator_input_which_goes_to_the_supervisor_s_operator_port()
     {
-        var bare = new BarePort();
-        IRobotPort port = bare;
+        string[] operatorMembers = ["TeleopAllowed", "ReportInputAge", "ReportPedal", "ReportEmergencyStop"];
 
-        Assert.True(port.TeleopAllowed);
-        port.ReportInputAge(0, double.MaxValue);
-        port.ReportPedal(down: false);
-        port.ReportEmergencyStop(pressed: true);
-
-        Assert.True(port.TeleopAllowed);
-        Assert.Equal(RobotFaults.None, port.Faults);
-        Assert.Equal(0, bare.Calls); // the defaults neither hold nor write: they only tell a supervisor, and there is none
+        Assert.All(operatorMembers, name => Assert.Empty(typeof(IRobotPort).GetMember(name)));
+        Assert.All(operatorMembers, name => Assert.Single(typeof(IOperatorPort).GetMember(name)));
     }
 
     [Fact]
@@ -51,27 +42,5 @@ public sealed class RobotPortTests
         // The run's progress line and the console list the faults by name.
         Assert.Equal("ModuleReset, BusDegraded", (RobotFaults.ModuleReset | RobotFaults.BusDegraded).ToString());
         Assert.Equal("None", RobotFaults.None.ToString());
-    }
-
-    /// <summary>A port implementing only what every port must: every call to it is counted.</summary>
-    private sealed class BarePort : IRobotPort
-    {
-        public int Calls { get; private set; }
-
-        public RobotDefinition Definition => throw new NotSupportedException("not needed by these tests");
-
-        public int ArmCount => 2;
-
-        public RobotFaults Faults => RobotFaults.None;
-
-        public void WriteJointSetpoints(int arm, ReadOnlySpan<double> jointsRad) => Calls++;
-
-        public void WriteJawSetpoint(int arm, double jawRad) => Calls++;
-
-        public void ReadJointPositions(int arm, Span<double> jointsRad) => Calls++;
-
-        public void ReadMotorCurrents(int arm, Span<double> currentsA) => Calls++;
-
-        public void HoldPosition() => Calls++;
     }
 }

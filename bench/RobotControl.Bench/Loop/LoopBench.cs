@@ -1,7 +1,7 @@
 using System.Globalization;
 using System.Text;
+using RobotControl.Cli;
 using RobotControl.Host.Harness;
-using RobotControl.Host.Plugins;
 
 namespace RobotControl.Bench.Loop;
 
@@ -23,7 +23,7 @@ internal sealed class LoopBench : IBenchCommand
         var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
         var duration = RunDuration.Parse(Arg(args, "--duration") ?? "20s");
         var outPath = Arg(args, "--out") ?? "docs/perf/loop.md";
-        var catalog = HostPlugins.Catalog();
+        var catalog = ShippedPlugins.Catalog();
         var c = CultureInfo.InvariantCulture;
 
         // 1. Tick cost, allocations and latency in one run (after a cold run to warm the JIT).

@@ -2,9 +2,9 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Runtime;
 using System.Text.Json;
+using RobotControl.Cli;
 using RobotControl.Hardware.Model;
 using RobotControl.Host.Harness;
-using RobotControl.Host.Plugins;
 using RobotControl.Host.Realtime;
 using RobotControl.Host.Safety;
 
@@ -82,7 +82,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
     private static int Run(string graph, string robot, double seconds, string[] scenarios, RealtimeThreads threads, SimSettings sim, FloorSettings floor, string? outFile, CancellationToken interrupt)
     {
         var duration = TimeSpan.FromSeconds(seconds);
-        var catalog = HostPlugins.Catalog();
+        var catalog = ShippedPlugins.Catalog();
         Console.WriteLine($"virtual-clock reference: {graph}, {seconds} s");
         var reference = HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration, Stop = interrupt }, catalog);
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  tracking rms {reference.TrackingRmsMm:F3} mm, max {reference.TrackingMaxMm:F3} mm, {reference.DeadlineMisses} misses"));
@@ -149,7 +149,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
             var pauseStart = GC.GetTotalPauseDuration();
             var report = HeadlessRun.RunRealTime(
                 new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads, RealtimeGcLatency = gc, Stop = interrupt },
-                HostPlugins.Catalog(),
+                ShippedPlugins.Catalog(),
                 new VirtualRunHooks
                 {
                     WrapLink = (link, _) => cycles = new CycleTimesLink(link, (int)(duration.TotalSeconds * 2_000) + 10_000, () => (allocStart, allocStartAt) = (GC.GetTotalAllocatedBytes(), Stopwatch.GetTimestamp())),

@@ -1,4 +1,5 @@
 using RobotControl.Plugins.Sdk;
+using RobotControl.Plugins.Sdk.Faults;
 using RobotControl.Plugins.Touch.Backends;
 
 namespace RobotControl.Plugins.Touch.Simulation;
@@ -6,8 +7,9 @@ namespace RobotControl.Plugins.Touch.Simulation;
 /// <summary>
 /// A simulated Touch: a hand follows a <see cref="HandScript"/> holding the stylus through a <see cref="HandModel"/>,
 /// so forces sent to the device visibly push the handle. Runs on the loop thread from the tick time: deterministic.
+/// Takes the injected device faults (<see cref="IFaultInjectable"/>): a jump of the reading and stale readings.
 /// </summary>
-public sealed class SimulatedTouchBackend : ITouchBackend
+public sealed class SimulatedTouchBackend : ITouchBackend, IFaultInjectable
 {
     private readonly HandScript _script;
     private readonly HandModel _hand;
@@ -74,6 +76,26 @@ public sealed class SimulatedTouchBackend : ITouchBackend
         if (double.IsNaN(_frozenAt))
         {
             _frozenAt = double.IsNaN(_lastTime) ? 0 : _lastTime;
+        }
+    }
+
+    /// <inheritdoc />
+    public bool CanTake(DeviceFaultKind kind) => kind is DeviceFaultKind.Jump or DeviceFaultKind.Stale;
+
+    /// <inheritdoc />
+    public void Inject(DeviceFault fault)
+    {
+        ArgumentNullException.ThrowIfNull(fault);
+        switch (fault.Kind)
+        {
+            case DeviceFaultKind.Jump:
+                Jump(fault.JumpXMm);
+                break;
+            case DeviceFaultKind.Stale:
+                Freeze();
+                break;
+            default:
+                throw new ArgumentException($"a simulated Touch cannot take a {fault} fault", nameof(fault));
         }
     }
 

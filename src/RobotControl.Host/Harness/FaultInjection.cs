@@ -9,8 +9,9 @@ namespace RobotControl.Host.Harness;
 /// <c>stuck=right.elbow@5s</c> (locked rotor), <c>current=right.elbow@5s</c> (current spike at the sensor),
 /// <c>nan=ik_right@5s</c> (the plug-in's arm gets a NaN setpoint), <c>pot=right.elbow@5s</c> (the joint pot fails), <c>silent=right.forearm@5s</c> (the module's
 /// transmit line breaks: its replies stop), <c>watchdog=right.forearm@5s</c> (the module's bus watchdog is switched off
-/// by a write that did not come from the host), <c>jump=touch_right:50mm@5s</c> (a simulated Touch's reading jumps 50 mm along x in one sample and
-/// stays offset) and <c>stale=touch_right@5s</c> (a simulated Touch stops giving new readings: the master timeout).
+/// by a write that did not come from the host), <c>jump=touch_right:50mm@5s</c> (an input device's reading jumps 50 mm along x in one sample and
+/// stays offset) and <c>stale=touch_right@5s</c> (an input device stops giving new readings: the master timeout); these two
+/// go to the named plug-in instance through the SDK's <c>IFaultInjectable</c> (a simulated Touch takes them).
 /// </summary>
 /// <param name="BitErrorRate">Probability that a bit on the wire flips.</param>
 /// <param name="Resets">Module resets: which module and when (run time).</param>
@@ -146,10 +147,10 @@ public enum TimedFaultKind
     /// <summary>A motor's joint pot fails: its wiper opens and the ADC reads 0 whatever the joint does.</summary>
     Pot,
 
-    /// <summary>A simulated Touch's reading jumps along x in one sample (and stays offset).</summary>
+    /// <summary>An input device's reading jumps along x in one sample (and stays offset); the SDK's <c>DeviceFaultKind.Jump</c>.</summary>
     Jump,
 
-    /// <summary>A simulated Touch stops giving new readings (its sample age grows: the master timeout).</summary>
+    /// <summary>An input device stops giving new readings (its sample age grows: the master timeout); the SDK's <c>DeviceFaultKind.Stale</c>.</summary>
     Stale,
 }
 

@@ -1,6 +1,5 @@
 using RobotControl.Bus.Protocol;
-using RobotControl.Plugins.Touch;
-using RobotControl.Plugins.Touch.Simulation;
+using RobotControl.Plugins.Sdk.Faults;
 using RobotControl.Robot.Bus;
 using RobotControl.Runtime.GraphFiles;
 using RobotControl.Runtime.Robot;
@@ -67,10 +66,8 @@ internal sealed class SafetyFaultSchedule
                     p.Axis!.PotFailedRaw = 0; // an open wiper pulled to ground
                     break;
                 case TimedFaultKind.Jump:
-                    p.Touch!.Jump(p.Fault.JumpMm);
-                    break;
                 case TimedFaultKind.Stale:
-                    p.Touch!.Freeze();
+                    p.Device!.Inject(p.DeviceFault!);
                     break;
             }
         }
@@ -97,10 +94,7 @@ internal sealed class SafetyFaultSchedule
                 return new Pending(f, at, axis, -1);
             case TimedFaultKind.Jump:
             case TimedFaultKind.Stale:
-                var touches = graph.Program.Order.OfType<TouchPlugin>().ToList();
-                var touch = touches.FirstOrDefault(t => t.Name == f.Target)?.Backend as SimulatedTouchBackend
-                    ?? throw new FormatException($"--inject '{f}': no simulated Touch '{f.Target}' in the graph (simulated Touch instances: {string.Join(", ", touches.Where(t => t.Backend is SimulatedTouchBackend).Select(t => t.Name))})");
-                return new Pending(f, at, null, -1, touch);
+                return new Pending(f, at, null, -1, DeviceFaultTargets.Resolve(f, graph.Program.Order), DeviceFaultTargets.FaultOf(f));
             case TimedFaultKind.Watchdog:
                 return new Pending(f, at, null, -1, Module: HeadlessRun.ResolveModule(graph.Robot!, f.Target));
             case TimedFaultKind.Nan:
@@ -115,5 +109,5 @@ internal sealed class SafetyFaultSchedule
         }
     }
 
-    private sealed record Pending(TimedFault Fault, long At, VirtualAxis? Axis, int Arm, SimulatedTouchBackend? Touch = null, byte Module = 0);
+    private sealed record Pending(TimedFault Fault, long At, VirtualAxis? Axis, int Arm, IFaultInjectable? Device = null, DeviceFault? DeviceFault = null, byte Module = 0);
 }

@@ -1,6 +1,5 @@
 using RobotControl.Bus.Protocol;
 using RobotControl.Host.Harness;
-using RobotControl.Host.Plugins;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Robot.States;
@@ -24,7 +23,7 @@ public sealed class FaultStopTests
     [Fact]
     public void A_tripped_watchdog_stops_the_run_and_the_stop_leaves_every_module_torque_off()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph() }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph() }, TestPlugins.Catalog());
         var stop = new FaultStop(session.Robot, continueOnFault: false, CancellationToken.None, session.Supervisor);
         session.RunVirtual(200, stopWhen: stop.ShouldStop);
         Assert.Null(stop.Fault);
@@ -48,7 +47,7 @@ public sealed class FaultStopTests
     [Fact]
     public void With_continue_on_fault_the_run_goes_on_and_a_stop_request_ends_it()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph() }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graph() }, TestPlugins.Catalog());
         using var cancel = new CancellationTokenSource();
         var stop = new FaultStop(session.Robot, continueOnFault: true, cancel.Token, session.Supervisor);
         TripWatchdog(session);

@@ -75,6 +75,8 @@ public sealed class MasterInputTests
         var e = Assert.Throws<FormatException>(() => FaultInjection.Parse("jump=touch_right:50@5s"));
         Assert.Equal("--inject 'jump=touch_right:50@5s': expected jump=<touch>:<distance>mm@<time> with a distance from -1000 to 1000 mm other than 0, e.g. jump=touch_right:50mm@5s", e.Message);
         var unknown = Assert.Throws<FormatException>(() => SafetyRun.Of("stale=touch_middle@1s", 0.1));
-        Assert.Equal("--inject 'stale=touch_middle@1s': no simulated Touch 'touch_middle' in the graph (simulated Touch instances: touch_right, touch_left)", unknown.Message);
+        Assert.Equal("--inject 'stale=touch_middle@1s': no plug-in 'touch_middle' in the graph (plug-ins that take stale faults: touch_right, touch_left)", unknown.Message);
+        var unable = Assert.Throws<FormatException>(() => SafetyRun.Of("jump=ik_right:50mm@1s", 0.1));
+        Assert.Equal("--inject 'jump=ik_right:50mm@1s': plug-in 'ik_right' cannot take jump faults (plug-ins that take them: touch_right, touch_left)", unable.Message);
     }
 }

@@ -1,5 +1,4 @@
 using RobotControl.Hardware.Model;
-using RobotControl.Host.Plugins;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Robot.States;
@@ -11,7 +10,7 @@ public sealed class RunLevelTests
     [Fact]
     public void Init_homing_pedal_up_pedal_down_trip_estop_reset_init_and_homing_again()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
         var supervisor = session.Supervisor;
         Assert.Equal(RunLevel.PedalUp, supervisor.Level);
         supervisor.PedalDown("pedal");
@@ -46,7 +45,7 @@ public sealed class RunLevelTests
     [Fact]
     public void An_emergency_stop_asked_for_from_another_thread_is_taken_in_the_next_cycle_and_holds()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
         var supervisor = session.Supervisor;
         supervisor.PedalDown("pedal");
         session.RunVirtual(100);
@@ -73,7 +72,7 @@ public sealed class RunLevelTests
         GoalFrameSpy? spy = null;
         using var session = RobotSession.Open(
             new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json"), WrapLink = (link, clock) => spy = new GoalFrameSpy(link, clock, goal.At(0), goal.Stride) },
-            HostPlugins.Catalog());
+            TestPlugins.Catalog());
         var before = spy!.Frames.Count;
         session.RunVirtual(1000);
         Assert.Equal(RunLevel.PedalUp, session.Supervisor.Level);
@@ -87,7 +86,7 @@ public sealed class RunLevelTests
     [Fact]
     public void Motors_off_goes_to_init_and_homing_turns_them_on_again_without_rehoming()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
         var supervisor = session.Supervisor;
         supervisor.PedalDown("pedal");
         session.RunVirtual(100);

@@ -1,7 +1,6 @@
 using RobotControl.Bus.Protocol;
 using RobotControl.Hardware.Model;
 using RobotControl.Host.Harness;
-using RobotControl.Host.Plugins;
 using RobotControl.Host.Safety;
 using RobotControl.Plugins.Touch;
 using RobotControl.Plugins.Touch.Simulation;
@@ -49,7 +48,7 @@ internal sealed class SafetyRun
         var lastForceAt = long.MinValue;
         var report = HeadlessRun.RunVirtual(
             new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject) },
-            HostPlugins.Catalog(),
+            TestPlugins.Catalog(),
             new VirtualRunHooks
             {
                 WrapLink = (link, clock) => spy = new GoalFrameSpy(link, clock, goal.At(0), goal.Stride),

@@ -1,4 +1,3 @@
-using RobotControl.Host.Plugins;
 using RobotControl.Host.Session;
 
 namespace RobotControl.Host.Tests.Safety;
@@ -12,7 +11,7 @@ public sealed class StepCapTests
         GoalFrameSpy? spy = null;
         using var session = RobotSession.Open(
             new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json"), WrapLink = (link, clock) => spy = new GoalFrameSpy(link, clock, goal.At(0), goal.Stride) },
-            HostPlugins.Catalog());
+            TestPlugins.Catalog());
         session.Supervisor.PedalDown("pedal");
         var robot = session.Robot;
         var far = robot.Definition.Joints.Select(j => j.MaxRad).ToArray(); // every joint to its upper limit at once

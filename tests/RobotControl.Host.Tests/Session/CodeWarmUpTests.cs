@@ -1,4 +1,3 @@
-using RobotControl.Host.Plugins;
 using RobotControl.Host.Session;
 
 namespace RobotControl.Host.Tests.Session;
@@ -18,7 +17,7 @@ public sealed class CodeWarmUpTests
     [Fact]
     public void The_cycle_types_of_the_teleop_graph_include_every_plug_in_type_it_runs_and_the_loop_and_supervisor()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json"), Virtual = true }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json"), Virtual = true }, TestPlugins.Catalog());
         var types = CodeWarmUp.CycleTypes(session.Graph.Program).ToHashSet();
         Assert.All(session.Graph.Program.Order, p => Assert.Contains(p.GetType(), types));
         Assert.Contains(typeof(Runtime.Loop.ControlLoop), types);

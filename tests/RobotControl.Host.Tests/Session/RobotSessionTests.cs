@@ -1,4 +1,3 @@
-using RobotControl.Host.Plugins;
 using RobotControl.Host.Session;
 using RobotControl.Robot.States;
 
@@ -8,7 +7,7 @@ public sealed class RobotSessionTests
 {
     private static double[] RunVirtual(long ticks)
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
         Assert.True(session.IsVirtual);
         Assert.Equal(RobotState.Enabled, session.Robot.State);
         Assert.True(session.Discovery.AllAsConfigured);
@@ -36,14 +35,14 @@ public sealed class RobotSessionTests
     [Fact]
     public void A_virtual_session_refuses_to_start_real_threads()
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, HostPlugins.Catalog());
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
         Assert.Throws<InvalidOperationException>(() => session.StartRealtime());
     }
 
     [Fact]
     public void The_shipped_plug_ins_are_registered_in_one_place()
     {
-        var catalog = HostPlugins.Catalog();
+        var catalog = TestPlugins.Catalog();
         Assert.Contains(catalog.Types, t => t.Name == "clutch");
         Assert.Contains(catalog.Types, t => t.Name == "touch");
     }

@@ -79,7 +79,7 @@ internal sealed class PluginsCommand : ICliCommand
             }
         }
 
-        var catalog = RunCommand.Catalog(pluginsFolder);
+        var catalog = ShippedPlugins.Catalog(pluginsFolder);
         Dictionary<string, PluginExample> examples = [];
         if (examplesGraph is not null)
         {

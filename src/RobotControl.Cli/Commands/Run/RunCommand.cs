@@ -4,7 +4,6 @@ using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
 using RobotControl.Hardware.Loading;
 using RobotControl.Host.Harness;
-using RobotControl.Host.Plugins;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;
@@ -65,13 +64,10 @@ internal sealed class RunCommand : ICliCommand
         return command;
     }
 
-    /// <summary>The catalogue of the host's plug-in types (standard, Touch, CoppeliaSim), plus a plug-ins folder.</summary>
-    internal static PluginCatalog Catalog(string? pluginsFolder) => HostPlugins.Catalog(pluginsFolder);
-
     /// <summary>Runs the command; returns the exit code (0 ok, 1 faults or deadline misses, 2 bad input).</summary>
     internal static int Run(string graphPath, bool isVirtual, TimeSpan duration, string? reportPath, string? injectText, string? pluginsFolder, int seed, IReadOnlyList<string> settingOverrides, RunExtras extras, TextWriter output, TextWriter error)
     {
-        var catalog = Catalog(pluginsFolder);
+        var catalog = ShippedPlugins.Catalog(pluginsFolder);
         foreach (var problem in catalog.Problems)
         {
             error.WriteLine($"plug-ins: {problem}");

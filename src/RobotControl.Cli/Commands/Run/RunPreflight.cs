@@ -10,7 +10,8 @@ namespace RobotControl.Cli.Commands.Run;
 /// <summary>
 /// What <c>robotctl run</c> checks before it starts anything: the graph loads and names a robot file with a modules
 /// section (the bus, virtual or real, is made of them), the graph's transport is well-formed even when
-/// <c>--virtual</c> replaces it, and every injected fault falls inside the run.
+/// <c>--virtual</c> replaces it, every injected fault falls inside the run, and every device fault names an instance
+/// of the graph that can take it.
 /// </summary>
 internal static class RunPreflight
 {
@@ -46,6 +47,11 @@ internal static class RunPreflight
             throw new FormatException(string.Create(
                 CultureInfo.InvariantCulture,
                 $"--inject reset={reset.Module}@{reset.At.TotalSeconds:0.###}s: after the end of the run ({options.Duration.TotalSeconds:0.###} s), so it would never happen"));
+        }
+
+        foreach (var fault in options.Inject.TimedFaults.Where(DeviceFaultTargets.IsDeviceFault))
+        {
+            DeviceFaultTargets.Resolve(fault, loaded.Program.Order);
         }
     }
 }

@@ -90,7 +90,7 @@ internal sealed class ConsoleCommand : ICliCommand
             }
 
             extras.CheckPage();
-            options = new HeadlessSessionOptions { GraphPath = graphPath, Catalog = RunCommand.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed, Threads = extras.Scheduling.Threads() };
+            options = new HeadlessSessionOptions { GraphPath = graphPath, Catalog = ShippedPlugins.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed, Threads = extras.Scheduling.Threads() };
             session = new HeadlessSession(options with { Inject = FaultInjection.Parse(extras.Inject) }); // faults for the first session only, not for graphs started from the editor
         }
         catch (GraphException ex)

@@ -29,6 +29,18 @@ public sealed class RunCommandHardeningTests : IDisposable
     }
 
     [Theory]
+    [InlineData("stale=ik_right@0.5s", "--inject 'stale=ik_right@0.5s': plug-in 'ik_right' cannot take stale faults (plug-ins that take them: touch_right, touch_left)")]
+    [InlineData("jump=pedals:5mm@0.5s", "--inject 'jump=pedals:5mm@0.5s': no plug-in 'pedals' in the graph (plug-ins that take jump faults: touch_right, touch_left)")]
+    public void A_device_fault_aimed_at_an_instance_that_cannot_take_it_is_refused_before_it_starts(string inject, string message)
+    {
+        var result = Cli.Run("run", Graph, "--virtual", "--duration", "1s", "--inject", inject);
+
+        Cli.AssertRefused(result, message);
+        Assert.Equal(2, result.Code);
+        Assert.Equal(string.Empty, result.Output);
+    }
+
+    [Theory]
     [InlineData("missing-dir/report.json", "does not exist")]
     [InlineData("", "is a directory")]
     [InlineData("/dev/full", "not a regular file")]
