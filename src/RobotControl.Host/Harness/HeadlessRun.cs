@@ -72,7 +72,7 @@ public static class HeadlessRun
 
         var safetyFaults = new SafetyFaultSchedule(options.Inject.TimedFaults, sim, bus, session.Graph, begin, clock.TimestampFrequency);
         var around = hooks?.AroundTick;
-        PressPedal(session, begin);
+        PressPedal(session, begin, faults);
         var loop = session.Loop;
         var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
@@ -118,14 +118,25 @@ public static class HeadlessRun
 
     /// <summary>
     /// Without a pedal wired to the robot node (the shipped graphs), the harness is the operator and holds the pedal
-    /// down for the run; with one, the pedal moves the run level (<see cref="SafetySupervisor"/>).
+    /// down for the run; with one, the pedal moves the run level (<see cref="SafetySupervisor"/>). On the wall clock
+    /// the press runs on the bus thread between cycles; a trip that came first (a stalled machine at start) leaves the
+    /// run at E_STOP, holding, and is reported, as any trip.
     /// </summary>
-    private static void PressPedal(RobotSession session, long begin)
+    private static void PressPedal(RobotSession session, long begin, List<FaultEntry> faults)
     {
         session.Supervisor.SetOrigin(begin);
-        if (!session.Graph.Document.Wires.Any(w => w.To == $"{RobotNode.InstanceName}.pedal"))
+        if (session.Graph.Document.Wires.Any(w => w.To == $"{RobotNode.InstanceName}.pedal"))
+        {
+            return;
+        }
+
+        try
         {
             session.Supervisor.PedalDown("harness");
+        }
+        catch (InvalidOperationException ex) when (session.Supervisor.Level == RunLevel.EStop)
+        {
+            faults.Add(new FaultEntry(0, "harness", $"the pedal was not pressed: {ex.Message}"));
         }
     }
 
@@ -159,7 +170,7 @@ public static class HeadlessRun
         using var gcRestore = new RestoreOnDispose(() => System.Runtime.GCSettings.LatencyMode = gcBefore);
         session.StartRealtime(threads); // warm-up, homing, motors on: the run's time starts when the threads do
         var begin = clock.GetTimestamp();
-        PressPedal(session, begin);
+        PressPedal(session, begin, faults);
         try
         {
             while (clock.GetElapsedTime(begin) < options.Duration && loop.ThreadFailure is null && !stopper.ShouldStop())
