@@ -11,6 +11,8 @@ namespace RobotControl.Robot.Bus;
 /// <summary>Module setup: discovery, parameters, torque.</summary>
 public sealed partial class BusRobot
 {
+    private ParameterWriter? _parameterWriter;
+
     /// <summary>
     /// Broadcast-pings the bus and compares what answers with the robot file: missing, unknown and mismatched
     /// modules are listed (each problem also once in <see cref="Events"/>); present ones take part in the cycles.
@@ -112,60 +114,27 @@ public sealed partial class BusRobot
         return result;
     }
 
-    /// <summary>Writes the robot file's parameters into every present module's FRAM (each write is durable when acknowledged).</summary>
+    /// <summary>
+    /// Writes the robot file's parameters into every present module's FRAM through the one parameter path
+    /// (<see cref="ParameterWriter.WriteAll"/>): all are checked before any is written, then read back.
+    /// </summary>
     /// <returns>How many values were written.</returns>
-    /// <exception cref="IOException">A module refused or did not acknowledge a value.</exception>
-    public int WriteParameters()
-    {
-        var count = 0;
-        Span<byte> value = stackalloc byte[4];
-        foreach (var c in _active)
-        {
-            foreach (var p in ModuleParameters.For(Definition, c.Definition, _table))
-            {
-                p.Field.Encode(p.Value, value);
-                var reply = _client.Write(c.Id, p.Address, value[..p.Field.Size]);
-                if (!reply.Succeeded)
-                {
-                    throw new IOException($"module {c.Id} \"{c.Name}\": writing {p} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)})");
-                }
+    /// <exception cref="ArgumentException">A value breaks the control table's rules; nothing was written.</exception>
+    /// <exception cref="IOException">A module refused a value, did not answer or read back something else.</exception>
+    public int WriteParameters() =>
+        Parameters.WriteAll([.. _active.Select(c => (c.Id, ModuleParameters.For(Definition, c.Definition, _table)))]);
 
-                count++;
-            }
-        }
-
-        return count;
-    }
-
-    /// <summary>Writes one persistent parameter of one motor (or module-wide field) and reads it back.</summary>
-    /// <exception cref="IOException">The module refused the value or read back something else.</exception>
-    public long WriteParameter(byte moduleId, string field, int motor, long value)
-    {
-        var f = _table[field];
-        Span<byte> bytes = stackalloc byte[4];
-        f.Encode(value, bytes);
-        var reply = _client.Write(moduleId, f.At(motor), bytes[..f.Size]);
-        if (!reply.Succeeded)
-        {
-            var locked = f.Persistent && StatusErrors.Number(reply.Error) == StatusError.Access ? ": the persistent area is locked while torque is on, turn torque off first" : string.Empty;
-            throw new IOException($"module {moduleId}: writing {field}[{motor}] = {value} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)}){locked}");
-        }
-
-        var back = ReadParameter(moduleId, field, motor);
-        return back == value ? back : throw new IOException($"module {moduleId}: {field}[{motor}] reads back {back} after writing {value}");
-    }
+    /// <summary>
+    /// Writes one persistent parameter of one motor (or module-wide field) through the one parameter path
+    /// (<see cref="ParameterWriter.Write"/>: checked, written, read back).
+    /// </summary>
+    /// <exception cref="ArgumentException">The value breaks the control table's rules; nothing was written.</exception>
+    /// <exception cref="IOException">The module refused the value, did not answer or read back something else.</exception>
+    public long WriteParameter(byte moduleId, string field, int motor, long value) => Parameters.Write(moduleId, field, motor, value);
 
     /// <summary>Reads one control-table value.</summary>
     /// <exception cref="IOException">The module does not answer.</exception>
-    public long ReadParameter(byte moduleId, string field, int motor = 0)
-    {
-        var f = _table[field];
-        Span<byte> bytes = stackalloc byte[4];
-        var reply = _client.Read(moduleId, f.At(motor), bytes[..f.Size]);
-        return reply.Outcome == ReplyOutcome.Ok
-            ? f.Decode(bytes)
-            : throw new IOException($"module {moduleId}: reading {field}[{motor}] failed ({reply.Outcome})");
-    }
+    public long ReadParameter(byte moduleId, string field, int motor = 0) => Parameters.Read(moduleId, field, motor);
 
     /// <summary>
     /// Turns the motors on (arming each module's bus watchdog) or off. Turning on first makes every setpoint the
@@ -235,6 +204,9 @@ public sealed partial class BusRobot
 
     /// <summary>Clears latched faults here and in the modules (hardware errors, watchdog) and re-enables torque if it was on.</summary>
     public void ClearFaults() => _clearRequested = true;
+
+    /// <summary>The one parameter path on this robot's bus (made on first use).</summary>
+    private ParameterWriter Parameters => _parameterWriter ??= new ParameterWriter(_client, _table);
 
     /// <summary>A module's reset cause from before the host connected is history, not a fault: note it and clear it.</summary>
     private void AcknowledgeStartup()
