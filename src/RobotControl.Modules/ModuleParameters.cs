@@ -52,11 +52,7 @@ public static class ModuleParameters
         {
             var config = new MotorConfig(robot, module, motor);
             var ch = motor.Channel;
-            values.Add(new(table["gear_ratio"], ch, (long)Math.Round(config.GearRatio * 1000), $"{config.GearRatio:F3}:1"));
-            var kp = motor.Kp * 255 / config.CountsPerRad * 256;
-            values.Add(new(table["kp"], ch, Clamp(kp, table["kp"]), $"{motor.Kp} duty/rad"));
-            values.Add(new(table["speed_limit"], ch, Math.Max(1, Clamp(motor.SpeedLimitRadS * config.CountsPerRad, table["speed_limit"])), $"{motor.SpeedLimitRadS * 180 / Math.PI:F1} deg/s"));
-            values.Add(new(table["current_limit"], ch, Clamp(motor.CurrentLimitA * config.RawPerAmp, table["current_limit"]), $"{motor.CurrentLimitA} A"));
+            values.AddRange(MotorParameter.All.Select(p => new ParameterValue(table[p.Field.Name], ch, p.FileCounts(config), p.FileText(config))));
             values.Add(new(table["control_mode"], ch, 0, "position"));
             values.Add(new(table["position_min"], ch, config.ToCounts(config.OutputMinRad), $"{config.OutputMinRad * 180 / Math.PI:F1} deg"));
             values.Add(new(table["position_max"], ch, config.ToCounts(config.OutputMaxRad), $"{config.OutputMaxRad * 180 / Math.PI:F1} deg"));
@@ -96,6 +92,4 @@ public static class ModuleParameters
 
         return rates;
     }
-
-    private static long Clamp(double value, ControlTableField field) => (long)Math.Clamp(Math.Round(value), field.Min, field.Max);
 }

@@ -20,12 +20,18 @@ public static class ParameterRules
             return $"{field.Name} is read-only";
         }
 
-        var (typeMin, typeMax) = TypeRange(field);
-        var min = Math.Max((long)field.Min, typeMin);
-        var max = Math.Min((long)field.Max, typeMax);
+        var (min, max) = Range(field);
         return value < min || value > max
-            ? string.Create(CultureInfo.InvariantCulture, $"{field.Name} = {value} is outside its range {min}..{max} ({field.Type}{(field.Unit.Length > 0 ? ", " + field.Unit : string.Empty)}); nothing was written")
+            ? string.Create(CultureInfo.InvariantCulture, $"{field.Name} = {value} is outside its range {min}..{max} ({field.Type}{(field.Unit.Length > 0 ? ", " + field.Unit : string.Empty)})")
             : null;
+    }
+
+    /// <summary>The values <paramref name="field"/> accepts: its own range within what its type holds.</summary>
+    public static (long Min, long Max) Range(ControlTableField field)
+    {
+        ArgumentNullException.ThrowIfNull(field);
+        var (typeMin, typeMax) = TypeRange(field);
+        return (Math.Max((long)field.Min, typeMin), Math.Min((long)field.Max, typeMax));
     }
 
     /// <summary>

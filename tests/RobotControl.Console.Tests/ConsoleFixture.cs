@@ -1,5 +1,6 @@
 using System.Net.Http.Json;
 using Microsoft.Playwright;
+using RobotControl.Host.Harness;
 using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
@@ -48,9 +49,18 @@ public sealed class ConsoleFixture : IAsyncLifetime
 
     public static PluginCatalog Catalog() => PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
 
+    /// <summary>A console session on the virtual LB-1.0 running <c>graphs/teleop-lb.json</c>, with <paramref name="inject"/>'s faults.</summary>
+    public static HeadlessSession VirtualSession(FaultInjection? inject = null) => new(new HeadlessSessionOptions
+    {
+        GraphPath = Path.Combine(RepoRoot, "graphs", "teleop-lb.json"),
+        Catalog = Catalog(),
+        Virtual = true,
+        Inject = inject ?? FaultInjection.None,
+    });
+
     public async Task InitializeAsync()
     {
-        Session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = Path.Combine(RepoRoot, "graphs", "teleop-lb.json"), Catalog = Catalog(), Virtual = true });
+        Session = VirtualSession();
         Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null);
         _chromium = await HeadlessChromium.LaunchAsync();
     }

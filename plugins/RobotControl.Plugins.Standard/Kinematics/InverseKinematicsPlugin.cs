@@ -12,7 +12,7 @@ namespace RobotControl.Plugins.Standard.Kinematics;
 /// warm-started from the previous solution. When the target is out of reach the joints go to the best reachable pose
 /// and <c>fx, fy, fz</c> carry the workspace force k_s (Ph - Pd) in the arm's base frame (zero when reached).
 /// </summary>
-[PluginType("inverse_kinematics", Description = "CCD + quasi-Newton IK of the robot arm with workspace-force outputs.")]
+[PluginType("inverse_kinematics", Description = "CCD + bounded Levenberg-Marquardt IK of the robot arm with workspace-force outputs.")]
 public sealed class InverseKinematicsPlugin : Plugin<InverseKinematicsSettings>
 {
     private readonly IkSolver _solver;

@@ -114,31 +114,22 @@ public sealed partial class HeadlessSession
 
         return _commands.Submit(() =>
         {
-            var c = m.Controller;
-            var ch = m.Config.Channel;
-            Span<byte> bytes = stackalloc byte[4];
-            p.Field.Encode(counts, bytes);
-            var reply = _bus.Client.Write(c.Id, p.Field.At(ch), bytes[..p.Field.Size]);
-            if (reply.Outcome != ReplyOutcome.Ok)
+            var (c, ch) = (m.Controller, m.Config.Channel);
+            try
             {
-                return CommandResult.Fail(CommandOutcome.Failed, $"module {c.Id}: no reply writing {p.Field.Name}[{ch}] ({reply.Outcome}); nothing changed");
+                // The robot layer's one parameter path, as robotctl params set: checked, written, read back.
+                var back = _bus.WriteParameter(c.Id, p.Field.Name, ch, counts);
+                _parameters[(c.Id, ch, p.Key)] = p.FromCounts(m.Config, back);
+                var text = $"{m.Config.FullName}: {p.Label} = {p.FromCounts(m.Config, back):G6} {p.Unit} written to FRAM ({p.Field.Name}[{ch}] = {back}, read back)";
+                _events.Add(Now, "console", text);
+                return CommandResult.Ok(text);
             }
-
-            if (!reply.Succeeded)
+            catch (Exception ex) when (ex is ArgumentException or IOException)
             {
-                var hint = StatusErrors.Number(reply.Error) == StatusError.Access && TorqueOn
-                    ? $"; the persistent area is written with the motors off (run level {_supervisor.Level.Name()}): turn torque off first"
-                    : string.Empty;
-                var message = $"module {c.Id} refused {p.Field.Name}[{ch}] = {counts} ({value:G6} {p.Unit}): error {StatusErrors.Describe(reply.Error)}{hint}";
+                var message = $"{m.Config.FullName}: {p.Label} {value:G6} {p.Unit} ({counts} {p.Field.Unit}): {ex.Message}";
                 _events.Add(Now, "console", message);
-                return CommandResult.Fail(CommandOutcome.Refused, message);
+                return CommandResult.Fail(ex is ArgumentException ? CommandOutcome.BadInput : CommandOutcome.Refused, message);
             }
-
-            var back = _bus.ReadParameter(c.Id, p.Field.Name, ch);
-            _parameters[(c.Id, ch, p.Key)] = p.FromCounts(m.Config, back);
-            var text = $"{m.Config.FullName}: {p.Label} = {p.FromCounts(m.Config, back):G6} {p.Unit} written to FRAM ({p.Field.Name}[{ch}] = {back}, read back)";
-            _events.Add(Now, "console", text);
-            return back == counts ? CommandResult.Ok(text) : CommandResult.Fail(CommandOutcome.Failed, $"{m.Config.FullName}: {p.Field.Name} reads back {back} after writing {counts}");
         });
     }
 

@@ -1,3 +1,4 @@
+using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.WebConsole.Session;
 

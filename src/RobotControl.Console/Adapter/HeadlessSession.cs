@@ -367,7 +367,7 @@ public sealed partial class HeadlessSession : IConsoleSession
                 m.Errors is { } errors ? Names(errors) : [],
                 [.. MotorParameter.All.Select(p =>
                 {
-                    var (min, max) = p.Encodable(m.Config);
+                    var (min, max) = p.Range(m.Config);
                     var value = _parameters.TryGetValue((c.Id, m.Config.Channel, p.Key), out var v) ? v : double.NaN;
                     return new ParameterSpec(p.Key, p.Label, p.Unit, value, p.FileValue(m.Config), min, max);
                 })])).ToList();

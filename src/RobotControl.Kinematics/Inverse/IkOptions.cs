@@ -18,7 +18,7 @@ public sealed record IkOptions
     /// <summary>Workspace spring stiffness k_s, N/mm, for the force output when unreachable.</summary>
     public double WorkspaceStiffnessNPerMm { get; init; } = 0.05;
 
-    /// <summary>Upper bound on work per solve (CCD cycles + quasi-Newton iterations), so the control loop's time is bounded.</summary>
+    /// <summary>Upper bound on work per solve (CCD cycles + Levenberg-Marquardt iterations), so the control loop's time is bounded.</summary>
     public int MaxIterations { get; init; } = 200;
 
     /// <summary>Random restarts allowed when stuck at a limit or local minimum (0 disables; deterministic seed).</summary>

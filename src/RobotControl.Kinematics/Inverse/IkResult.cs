@@ -11,7 +11,7 @@ namespace RobotControl.Kinematics.Inverse;
 /// <param name="PositionErrorMm">|Pd - Ph|, mm.</param>
 /// <param name="OrientationErrorRad">Largest angle between a selected target axis and the reached one, radians.</param>
 /// <param name="WorkspaceForce">k_s (Ph - Pd) in the arm's base frame, newtons (zero when reached), before any per-axis clamp.</param>
-/// <param name="Iterations">CCD cycles plus quasi-Newton iterations used.</param>
+/// <param name="Iterations">CCD cycles plus Levenberg-Marquardt iterations used.</param>
 public readonly record struct IkResult(
     IkStatus Status,
     Vector3d ReachedPosition,

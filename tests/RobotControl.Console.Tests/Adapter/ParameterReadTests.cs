@@ -13,13 +13,7 @@ public sealed class ParameterReadTests
     [Fact]
     public async Task A_module_silent_from_the_start_leaves_its_parameters_unknown_and_the_session_running()
     {
-        using var session = new HeadlessSession(new HeadlessSessionOptions
-        {
-            GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"),
-            Catalog = ConsoleFixture.Catalog(),
-            Virtual = true,
-            Inject = FaultInjection.Parse("silent=left.forearm@0s"),
-        });
+        using var session = ConsoleFixture.VirtualSession(FaultInjection.Parse("silent=left.forearm@0s"));
         var waited = Stopwatch.StartNew();
         while (!session.EventsAfter(0).Any(e => e.Message.Contains("parameters stay unknown", StringComparison.Ordinal)))
         {

@@ -55,8 +55,8 @@ public sealed class ApiTests(ConsoleFixture console)
         await Expect(HttpStatusCode.BadRequest, await http.PostAsJsonAsync("api/motors/right.elbow/jog", new { degPerS = 1e6 }), "speed limit");
         await Expect(HttpStatusCode.BadRequest, await http.PutAsync("api/motors/right.elbow/parameters/kp", new StringContent("{\"value\": ", Encoding.UTF8, "application/json")), "malformed JSON");
         await Expect(HttpStatusCode.BadRequest, await http.PutAsync("api/motors/right.elbow/parameters/kp", new StringContent("{\"valu\": 3}", Encoding.UTF8, "application/json")), "kp");
-        await Expect(HttpStatusCode.BadRequest, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/current_limit", new { value = 1e6 }), "outside what current_limit");
-        await Expect(HttpStatusCode.BadRequest, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/kp", new { value = -1 }), "outside what kp");
+        await Expect(HttpStatusCode.BadRequest, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/current_limit", new { value = 1e6 }), "is outside its range 0..4095");
+        await Expect(HttpStatusCode.BadRequest, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/kp", new { value = -1 }), "is outside its range 0..65535");
         await Expect(HttpStatusCode.NotFound, await http.PutAsJsonAsync("api/motors/right.elbow/parameters/nosuch", new { value = 1 }), "no parameter 'nosuch'");
         await Expect(HttpStatusCode.NotFound, await http.PostAsync("api/controllers/99/reboot", null), "no controller 99");
 

@@ -92,15 +92,15 @@ public sealed class PageTests(ConsoleFixture console)
         // Motors on: the module refuses a persistent write itself (access error), and the page says what to do.
         await page.GetByLabel($"P gain of {Elbow}").FillAsync("9");
         await page.GetByTestId($"write-kp-{Elbow}").ClickAsync();
-        await Expect(page, "#message.error", "error 0x07 access error; the persistent area is written with the motors off (run level PEDAL_UP): turn torque off first");
+        await Expect(page, "#message.error", "module 2: writing kp[0] = 401 failed (Ok, 0x07 access error): the persistent area is locked while torque is on, turn torque off first");
         await Click(page, "torque-off", "motors off");
 
-        // Motors off: 0.3 A is 4914 ADC counts on the 0.25 A-full-scale arm module: the field holds it, the firmware's range (0..4095) does not.
-        await page.GetByLabel($"current limit of {Elbow}").FillAsync("0.3");
+        // Motors off: 0.3 A is 4914 ADC counts on the 0.25 A-full-scale arm module, outside current_limit's range
+        // (0..4095): the page offers the range the parameter path accepts, in amperes, and sends nothing.
+        var limit = page.GetByLabel($"current limit of {Elbow}");
+        await limit.FillAsync("0.3");
         await page.GetByTestId($"write-current_limit-{Elbow}").ClickAsync();
-        await Expect(page, "#message.error", "refused current_limit");
-        var refusal = await page.Locator("#message").TextContentAsync() ?? string.Empty;
-        Assert.True(refusal.Contains("error 0x04 data range error", StringComparison.Ordinal), refusal);
+        Assert.Equal("give 0.000..0.250 A", await limit.EvaluateAsync<string>("e => e.validationMessage"));
         await page.ReloadAsync();
         await page.WaitForSelectorAsync($"[data-testid=\"position-{Elbow}\"]");
         await page.WaitForTimeoutAsync(600);

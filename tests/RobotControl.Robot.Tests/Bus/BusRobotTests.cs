@@ -49,6 +49,12 @@ public sealed class BusRobotTests
         Assert.Contains("torque", locked.Message, StringComparison.Ordinal);
         Assert.Equal(kp, lb.Robot.ReadParameter(2, "kp", 0));
         lb.Robot.EnableTorque(false);
+
+        // The rules refuse before the bus (the firmware itself would take a position_min above position_max).
+        var max = lb.Robot.ReadParameter(2, "position_max", 0);
+        var refused = Assert.Throws<ArgumentException>(() => lb.Robot.WriteParameter(2, "position_min", 0, max + 1));
+        Assert.Equal($"module 2: motor 0: position_min {max + 1} must be below position_max {max}; nothing was written", refused.Message);
+        Assert.True(lb.Robot.ReadParameter(2, "position_min", 0) < max);
         Assert.Equal(kp + 7, lb.Robot.WriteParameter(2, "kp", 0, kp + 7));
         lb.Sim.PowerCycle(2);
         lb.Sim.Advance(TimeSpan.FromMilliseconds(2));

@@ -22,12 +22,7 @@ internal static class BaudChange
     /// <exception cref="IOException">The bus is not as the robot file says, or a module refused (nothing changed).</exception>
     public static int Run(RobotConnection session, BusLine line, long code, (bool Module, int Motor) given, bool confirmed, TextWriter output)
     {
-        var field = ControlTable.Firmware["baud_rate"];
-        if (ParameterRules.CheckValue(field, code) is { } problem)
-        {
-            throw new ArgumentException($"--value: {problem}");
-        }
-
+        ParameterWriter.CheckValue(ControlTable.Firmware["baud_rate"], 0, code);
         var baud = ModuleParameters.BaudFromCode((int)code);
         if (baud == 0)
         {

@@ -97,11 +97,6 @@ internal sealed class ParamsCommand : ICliCommand
                 if (parse.GetValue(fromFile))
                 {
                     RequireFileBaud(session);
-                    foreach (var c in bus.Controllers.Where(c => c.Present))
-                    {
-                        ParameterGuard.CheckAll(session.Client, table, c.Id, ModuleParameters.For(session.Definition!, c.Definition, table));
-                    }
-
                     output.WriteLine($"wrote {bus.WriteParameters()} values; {bus.CheckParameters().Count} differ now");
                     return 0;
                 }
@@ -121,7 +116,7 @@ internal sealed class ParamsCommand : ICliCommand
                     throw new ArgumentException($"--field: the control table has no field '{name}' (writable: {string.Join(", ", table.Fields.Where(f => f.Writable).Select(f => f.Name))})");
                 }
 
-                ParameterGuard.CheckOne(session.Client, table, (byte)id, table[name], parse.GetValue(motor), v, parse.GetValue(yes));
+                ParameterGuard.CheckOne(session.Client, (byte)id, table[name], parse.GetValue(motor), v, parse.GetValue(yes));
                 var back = bus.WriteParameter((byte)id, name, parse.GetValue(motor), v);
                 output.WriteLine($"module {id}: {name}[{parse.GetValue(motor)}] = {back} (read back)");
                 return 0;

@@ -14,6 +14,8 @@ namespace RobotControl.Robot.Bus;
 [WrittenBy(RobotThread.Bus)]
 internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRoster roster, RobotEventStream events, RobotFaultFlags faults, RobotLifecycle life, ModuleArming arming, ModuleSupervisor supervisor, FeedbackExchange feedback, SetpointExchange setpoints, GoalSeed seed)
 {
+    private readonly ParameterWriter _parameters = new(client, layout.Table);
+
     private RobotStateMachine State => life.Machine;
 
     public DiscoveryReport Discover()
@@ -107,51 +109,14 @@ internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRos
         return result;
     }
 
-    public int WriteParameters()
-    {
-        var count = 0;
-        Span<byte> value = stackalloc byte[4];
-        foreach (var c in roster.Active.Controllers)
-        {
-            foreach (var p in ModuleParameters.For(layout.Definition, c.Definition, layout.Table))
-            {
-                p.Field.Encode(p.Value, value);
-                var reply = client.Write(c.Id, p.Address, value[..p.Field.Size]);
-                if (!reply.Succeeded)
-                {
-                    throw new IOException($"module {c.Id} \"{c.Name}\": writing {p} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)})");
-                }
+    /// <summary>The robot file's values into every present module's FRAM, through the one parameter path: all checked before any is written, then read back.</summary>
+    public int WriteParameters() =>
+        _parameters.WriteAll([.. roster.Active.Controllers.Select(c => (c.Id, ModuleParameters.For(layout.Definition, c.Definition, layout.Table)))]);
 
-                count++;
-            }
-        }
+    /// <summary>One persistent value through the one parameter path (<see cref="ParameterWriter.Write"/>: checked, written, read back).</summary>
+    public long WriteParameter(byte moduleId, string field, int motor, long value) => _parameters.Write(moduleId, field, motor, value);
 
-        return count;
-    }
-
-    public long WriteParameter(byte moduleId, string field, int motor, long value)
-    {
-        var f = layout.Table[field];
-        Span<byte> bytes = stackalloc byte[4];
-        f.Encode(value, bytes);
-        var reply = client.Write(moduleId, f.At(motor), bytes[..f.Size]);
-        if (!reply.Succeeded)
-        {
-            var locked = f.Persistent && StatusErrors.Number(reply.Error) == StatusError.Access ? ": the persistent area is locked while torque is on, turn torque off first" : string.Empty;
-            throw new IOException($"module {moduleId}: writing {field}[{motor}] = {value} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)}){locked}");
-        }
-
-        var back = ReadParameter(moduleId, field, motor);
-        return back == value ? back : throw new IOException($"module {moduleId}: {field}[{motor}] reads back {back} after writing {value}");
-    }
-
-    public long ReadParameter(byte moduleId, string field, int motor)
-    {
-        var reply = TryReadParameter(moduleId, field, motor, out var value);
-        return reply.Outcome == ReplyOutcome.Ok
-            ? value
-            : throw new IOException($"module {moduleId}: reading {field}[{motor}] failed ({reply.Outcome})");
-    }
+    public long ReadParameter(byte moduleId, string field, int motor) => _parameters.Read(moduleId, field, motor);
 
     public Reply TryReadParameter(byte moduleId, string field, int motor, out long value)
     {
