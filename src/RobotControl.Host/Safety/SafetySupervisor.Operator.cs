@@ -55,7 +55,8 @@ public sealed partial class SafetySupervisor
         if (failed > 0 || _robot.State != RobotState.Homed)
         {
             _levels.MoveTo(RunLevel.Init, source, $"homing incomplete: {failed} of {results.Count} motors not homed");
-            throw new InvalidOperationException($"homing incomplete: {failed} of {results.Count} motors not homed; the run level stays INIT");
+            var first = results.First(r => !r.Succeeded);
+            throw new InvalidOperationException($"homing incomplete: {failed} of {results.Count} motors not homed (first: {first.Motor.Config.FullName} {first.Outcome}{(first.Detail.Length > 0 ? ": " + first.Detail : string.Empty)}); the run level stays INIT");
         }
 
         _mustRehome = false;

@@ -62,8 +62,15 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
             var zeros = new byte[Span(torque)];
             foreach (var c in robot.Controllers)
             {
-                _ = robot.Client.Write(c.Id, torque.At(0), zeros, BusRobot.InsistingRetries);
-                _ = robot.Client.Write(c.Id, watchdog.At(0), zeros.AsSpan(0, watchdog.Size), BusRobot.InsistingRetries);
+                try
+                {
+                    _ = robot.Client.Write(c.Id, torque.At(0), zeros, BusRobot.InsistingRetries);
+                    _ = robot.Client.Write(c.Id, watchdog.At(0), zeros.AsSpan(0, watchdog.Size), BusRobot.InsistingRetries);
+                }
+                catch (IOException)
+                {
+                    // The link itself failed (an adapter unplugged): the read-back below says which modules are unreachable.
+                }
             }
         }
 
@@ -75,8 +82,7 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
         foreach (var c in robot.Controllers)
         {
             var who = $"{c.Id} \"{c.Name}\"";
-            if (!robot.Client.Read(c.Id, torque.At(0), channels, BusRobot.InsistingRetries).Succeeded
-                || robot.Client.Read(c.Id, status.At(0), error, BusRobot.InsistingRetries).Outcome != ReplyOutcome.Ok)
+            if (!ReadBack(robot, c.Id, torque.At(0), channels).Succeeded || ReadBack(robot, c.Id, status.At(0), error).Outcome != ReplyOutcome.Ok)
             {
                 unreachable.Add(who);
                 continue;
@@ -105,6 +111,19 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
         }
 
         w.WriteEndArray();
+    }
+
+    /// <summary>One insisting read of the stop's read-back; a link that fails (an adapter unplugged) is no answer.</summary>
+    private static Reply ReadBack(BusRobot robot, byte id, ushort address, Span<byte> data)
+    {
+        try
+        {
+            return robot.Client.Read(id, address, data, BusRobot.InsistingRetries);
+        }
+        catch (IOException)
+        {
+            return new Reply(ReplyOutcome.Timeout, 0);
+        }
     }
 
     private static int Span(ControlTableField field) => ((field.Count - 1) * field.Stride) + field.Size;

@@ -304,11 +304,16 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     /// <inheritdoc />
     public IDisposable OwnBus() => Slot.Own();
 
-    /// <summary>A failed cycle (the link said <paramref name="ex"/>): an event, and the bus degraded until a cycle succeeds.</summary>
+    /// <summary>
+    /// A failed cycle (the link said <paramref name="ex"/>): an event, the bus degraded and every present module's reply
+    /// missed until a cycle succeeds, and step <b>check</b> still runs, so the supervisor takes its safe state when the
+    /// silence lasts (module silent).
+    /// </summary>
     internal void CycleFailed(IOException ex)
     {
         Events.Publish(new BusError(ex.Message));
-        _faults.SetLive(RobotFaults.BusDegraded, true);
+        _feedback.CycleLost(_faults);
+        Check();
     }
 
     // --- the control loop's side (IRobotPort) ---------------------------------------------------------------------

@@ -91,6 +91,20 @@ internal sealed class FeedbackExchange
         Alert = alert;
     }
 
+    /// <summary>
+    /// A cycle the link failed (the bus thread caught its <see cref="IOException"/>): every present module missed its
+    /// reply, as if its feedback had not come, so the supervisor's module-silent check sees the silence.
+    /// </summary>
+    public void CycleLost(RobotFaultFlags faults)
+    {
+        foreach (var c in _roster.Active.Controllers)
+        {
+            Missed(c);
+        }
+
+        faults.SetLive(RobotFaults.BusDegraded, true);
+    }
+
     /// <summary>The arms' joint positions and currents from the motors' latest values.</summary>
     public void PublishFromMotors()
     {
@@ -132,6 +146,15 @@ internal sealed class FeedbackExchange
         PublishFromMotors();
     }
 
+    private void Missed(RobotController c)
+    {
+        if (++c.ConsecutiveMisses == _options.MissingAfterCycles)
+        {
+            Volatile.Write(ref c.PresentFlag, false);
+            _events.Publish(new ModuleStoppedAnswering(c.Id, c.Name));
+        }
+    }
+
     private void PublishGroup(FeedbackGroup g, ref bool alert, ref bool lost, ref bool limited)
     {
         for (var i = 0; i < g.Controllers.Length; i++)
@@ -141,12 +164,7 @@ internal sealed class FeedbackExchange
             if (reply.Outcome != ReplyOutcome.Ok)
             {
                 lost = true;
-                if (++c.ConsecutiveMisses == _options.MissingAfterCycles)
-                {
-                    Volatile.Write(ref c.PresentFlag, false);
-                    _events.Publish(new ModuleStoppedAnswering(c.Id, c.Name));
-                }
-
+                Missed(c);
                 continue;
             }
 
