@@ -305,13 +305,18 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     public IDisposable OwnBus() => Slot.Own();
 
     /// <summary>
-    /// A failed cycle (the link said <paramref name="ex"/>): an event, the bus degraded and every present module's reply
-    /// missed until a cycle succeeds, and step <b>check</b> still runs, so the supervisor takes its safe state when the
-    /// silence lasts (module silent).
+    /// A failed cycle (the link said <paramref name="ex"/>): the bus degraded and every present module's reply missed
+    /// until a cycle succeeds, and step <b>check</b> still runs, so the supervisor takes its safe state when the
+    /// silence lasts (module silent). With <paramref name="report"/>, a bus error event too (the bus thread reports a
+    /// failure that repeats once a second, with how many it left out).
     /// </summary>
-    internal void CycleFailed(IOException ex)
+    internal void CycleFailed(IOException ex, bool report, int leftOut)
     {
-        Events.Publish(new BusError(ex.Message));
+        if (report)
+        {
+            Events.Publish(new BusError(leftOut == 0 ? ex.Message : $"{ex.Message} ({leftOut} more failed cycles since the last report)"));
+        }
+
         _feedback.CycleLost(_faults);
         Check();
     }

@@ -12,8 +12,12 @@ namespace RobotControl.Robot.Bus;
 internal sealed class BusThread(BusRobot robot, BusRobotOptions options, TimeProvider time)
 {
     private static readonly TimeSpan PauseAfterFailure = TimeSpan.FromMilliseconds(10);
+    private static readonly TimeSpan RepeatedFailureReport = TimeSpan.FromSeconds(1);
     private Thread? _thread;
     private volatile bool _stopping;
+    private string? _lastFailure;
+    private long _lastFailureReported;
+    private int _failuresLeftOut;
 
     public bool IsRunning => _thread is not null;
 
@@ -44,6 +48,22 @@ internal sealed class BusThread(BusRobot robot, BusRobotOptions options, TimePro
         started.Dispose();
     }
 
+    /// <summary>A failed cycle; the same failure again is reported once a second, with how many were left out.</summary>
+    private void Failed(IOException ex)
+    {
+        var now = time.GetTimestamp();
+        var report = ex.Message != _lastFailure || time.GetElapsedTime(_lastFailureReported, now) >= RepeatedFailureReport;
+        robot.CycleFailed(ex, report, report ? _failuresLeftOut : 0);
+        if (report)
+        {
+            (_lastFailure, _lastFailureReported, _failuresLeftOut) = (ex.Message, now, 0);
+        }
+        else
+        {
+            _failuresLeftOut++;
+        }
+    }
+
     public void Stop()
     {
         _stopping = true;
@@ -66,10 +86,11 @@ internal sealed class BusThread(BusRobot robot, BusRobotOptions options, TimePro
             try
             {
                 robot.RunCycle();
+                _lastFailure = null; // the link works again: its next failure is news
             }
             catch (IOException ex)
             {
-                robot.CycleFailed(ex);
+                Failed(ex);
                 Thread.Sleep(PauseAfterFailure);
             }
 
