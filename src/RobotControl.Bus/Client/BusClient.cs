@@ -161,14 +161,22 @@ public sealed partial class BusClient : IDisposable
     /// one mapped run (<see cref="ControlTable.MappedRuns"/>) at a time, since a read over unmapped bytes is refused;
     /// unmapped bytes of <paramref name="block"/> are set to 0. Returns the first reply that did not succeed, or the last.
     /// </summary>
-    public Reply ReadMapped(byte id, ControlTable table, int start, Span<byte> block)
+    public Reply ReadMapped(byte id, ControlTable table, int start, Span<byte> block) => ReadMapped(id, table, start, block, _options.Retries);
+
+    /// <summary>As <see cref="ReadMapped(byte, ControlTable, int, Span{byte})"/>, each run's read retried <paramref name="retries"/> times (set-up that must get through insists).</summary>
+    /// <param name="id">The module.</param>
+    /// <param name="table">The control table (its mapped runs).</param>
+    /// <param name="start">First address of the block.</param>
+    /// <param name="block">Receives the block.</param>
+    /// <param name="retries">Retries of each run's read.</param>
+    public Reply ReadMapped(byte id, ControlTable table, int start, Span<byte> block, int retries)
     {
         ArgumentNullException.ThrowIfNull(table);
         block.Clear();
         var reply = new Reply(ReplyOutcome.Ok, 0);
         foreach (var (address, length) in table.MappedRuns(start, start + block.Length))
         {
-            reply = Read(id, (ushort)address, block.Slice(address - start, length));
+            reply = Read(id, (ushort)address, block.Slice(address - start, length), retries);
             if (!reply.Succeeded)
             {
                 return reply;

@@ -12,7 +12,10 @@ namespace RobotControl.Robot.Bus;
 /// record. Then each motor's position is read back and compared with its pot through the same calibration (within the
 /// module's <c>pot_mismatch_tolerance</c>), and its <c>motor_error</c> bits are checked. Motors without a pot
 /// calibration keep their position (<see cref="HomingOutcome.NotCalibrated"/>). A module that refuses or does not
-/// answer is reported for each of its motors; the others are still homed.
+/// answer is reported for each of its motors; the others are still homed. Every transaction insists
+/// (<see cref="BusRobot.InsistingRetries"/>): homing is set-up that must get through a stalled reply (a module process
+/// starved of the CPU missed the default retries), and a second home request is harmless (the same pot, the same
+/// position).
 /// </summary>
 [WrittenBy(RobotThread.Bus)]
 internal sealed class Homing(RobotLayout layout, BusClient client, ModuleRoster roster, RobotLifecycle life, RobotSetup setup, FeedbackExchange feedback)
@@ -69,7 +72,7 @@ internal sealed class Homing(RobotLayout layout, BusClient client, ModuleRoster 
     {
         var (start, end) = layout.Table.PersistentArea;
         var block = new byte[end - start];
-        if (!client.ReadMapped(c.Id, layout.Table, start, block).Succeeded)
+        if (!client.ReadMapped(c.Id, layout.Table, start, block, BusRobot.InsistingRetries).Succeeded)
         {
             foreach (var m in c.Motors)
             {
@@ -88,10 +91,10 @@ internal sealed class Homing(RobotLayout layout, BusClient client, ModuleRoster 
             }
         }
 
-        var request = mask == 0 ? new Reply(ReplyOutcome.Ok, 0) : client.Write(c.Id, layout.Table["home_request"].At(0), [(byte)mask]);
+        var request = mask == 0 ? new Reply(ReplyOutcome.Ok, 0) : client.Write(c.Id, layout.Table["home_request"].At(0), [(byte)mask], BusRobot.InsistingRetries);
         var tolerance = PersistentValue(block, start, "pot_mismatch_tolerance", 0);
         var errors = new byte[c.ChannelSpan];
-        var errorsRead = client.Read(c.Id, layout.Table["motor_error"].At(0), errors).Succeeded;
+        var errorsRead = client.Read(c.Id, layout.Table["motor_error"].At(0), errors, BusRobot.InsistingRetries).Succeeded;
         foreach (var m in c.Motors)
         {
             var calibrated = ((mask >> m.Config.Channel) & 1) != 0;
@@ -102,8 +105,8 @@ internal sealed class Homing(RobotLayout layout, BusClient client, ModuleRoster 
     private HomingResult VerifyHoming(RobotMotor m, bool calibrated, Reply request, byte[] block, int start, long tolerance, HardwareErrors? errors)
     {
         var ch = m.Config.Channel;
-        var hasRaw = setup.TryReadParameter(m.Controller.Id, "pot_raw", ch, out var raw).Succeeded;
-        var hasPosition = setup.TryReadParameter(m.Controller.Id, "present_position", ch, out var position).Succeeded;
+        var hasRaw = setup.TryReadParameter(m.Controller.Id, "pot_raw", ch, out var raw, BusRobot.InsistingRetries).Succeeded;
+        var hasPosition = setup.TryReadParameter(m.Controller.Id, "present_position", ch, out var position, BusRobot.InsistingRetries).Succeeded;
         var positionRad = hasPosition ? m.Config.ToRadians(position) : double.NaN;
         if (hasPosition)
         {

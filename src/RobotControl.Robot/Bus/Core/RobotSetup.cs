@@ -118,11 +118,11 @@ internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRos
 
     public long ReadParameter(byte moduleId, string field, int motor) => _parameters.Read(moduleId, field, motor);
 
-    public Reply TryReadParameter(byte moduleId, string field, int motor, out long value)
+    public Reply TryReadParameter(byte moduleId, string field, int motor, out long value, int? retries = null)
     {
         var f = layout.Table[field];
         Span<byte> bytes = stackalloc byte[4];
-        var reply = client.Read(moduleId, f.At(motor), bytes[..f.Size]);
+        var reply = retries is { } n ? client.Read(moduleId, f.At(motor), bytes[..f.Size], n) : client.Read(moduleId, f.At(motor), bytes[..f.Size]);
         value = reply.Outcome == ReplyOutcome.Ok ? f.Decode(bytes) : 0;
         return reply;
     }
