@@ -109,7 +109,7 @@ public static class HeadlessRun
         hooks?.AfterRun?.Invoke(session);
         var elapsed = clock.GetElapsedTime(begin);
         var check = session.Stop();
-        return Finish(stopper, check, loop, meter!, elapsed, session, faults);
+        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults);
     }
 
     /// <summary>The command line's E-STOP (<see cref="RunOptions.EmergencyStop"/>) goes to the supervisor, as any operator E-STOP.</summary>
@@ -198,7 +198,7 @@ public static class HeadlessRun
             faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"control loop failed: {failure.Message}"));
         }
 
-        return Finish(stopper, check, loop, meter!, elapsed, session, faults) with
+        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults) with
         {
             Scheduling = $"{threads.Outcome}; GC {options.RealtimeGcLatency}{(session.CpuLatency is { } latency ? "; " + latency : "")}",
             Compiled = new CompiledAfterStart(loop.MethodsCompiledAfterFirstTick, loop.CompileTimeAfterFirstTick, bus.MethodsCompiledAfterFirstCycle, bus.CompileTimeAfterFirstCycle),
@@ -206,10 +206,8 @@ public static class HeadlessRun
     }
 
     /// <summary>The report, with how the run ended and what the modules said after the motors were switched off.</summary>
-    private static RunReport Finish(FaultStop stopper, StopCheck check, ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, List<FaultEntry> faults)
+    private static RunReport Finish(FaultStop stopper, StopCheck check, ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, RobotEventSubscription events, List<FaultEntry> faults)
     {
-        var bus = session.Robot;
-        using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
         DrainEvents(events, elapsed, faults);
         if (stopper.Fault is { } fault)
         {
@@ -233,7 +231,6 @@ public static class HeadlessRun
     {
         var loaded = session.Graph;
         var bus = session.Robot;
-        using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
         var all = faults
             .Concat(loaded.Program.Faults.Select(f => new FaultEntry(f.Time.TotalSeconds, f.Instance, f.Message)))
             .OrderBy(f => f.TimeSeconds)
