@@ -16,6 +16,7 @@ public sealed class SingleWriterTests
     private const int Calls = 10_000;
 
     [Fact]
+    [Trait("Category", "Stress")] // about a minute: left out of mutation runs (tools/mutation/Robot.json), never out of the test command
     public async Task Torque_on_off_and_homing_from_another_thread_while_the_loop_and_bus_run_never_hang_and_never_tear_a_setpoint()
     {
         using var lb = new VirtualLb();
