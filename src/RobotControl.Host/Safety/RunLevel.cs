@@ -1,3 +1,5 @@
+using RobotControl.Robot.Control.States;
+
 namespace RobotControl.Host.Safety;
 
 /// <summary>The safety supervisor's run levels, lowest first (Raven-II's, plus homing).</summary>
@@ -19,8 +21,8 @@ public enum RunLevel
     PedalDown,
 }
 
-/// <summary>Names of the run levels as reports and the console write them.</summary>
-public static class RunLevelNames
+/// <summary>The run levels' names as reports and the console write them, and the moves between the levels.</summary>
+public static class RunLevels
 {
     /// <summary>E_STOP, INIT, HOMING, PEDAL_UP, PEDAL_DOWN.</summary>
     public static string Name(this RunLevel level) => level switch
@@ -32,12 +34,20 @@ public static class RunLevelNames
         RunLevel.PedalDown => "PEDAL_DOWN",
         _ => level.ToString(),
     };
-}
 
-/// <summary>One run-level change.</summary>
-/// <param name="Timestamp">When, on the supervisor's clock (<see cref="TimeProvider.GetTimestamp"/>).</param>
-/// <param name="From">Level before.</param>
-/// <param name="To">Level after.</param>
-/// <param name="Source">Who asked: <c>operator</c>, <c>pedal</c>, <c>session</c>, <c>cli</c>, or the check that tripped.</param>
-/// <param name="Reason">Why.</param>
-public sealed record RunLevelTransition(long Timestamp, RunLevel From, RunLevel To, string Source, string Reason);
+    /// <summary>
+    /// A machine at <see cref="RunLevel.Init"/>, timing its moves on <paramref name="time"/>, every level declared once
+    /// with the levels that may follow it. There is no automatic recovery: the only way out of
+    /// <see cref="RunLevel.EStop"/> is an operator reset to <see cref="RunLevel.Init"/>.
+    /// </summary>
+    internal static StateMachine<RunLevel> NewMachine(TimeProvider time)
+    {
+        var levels = new StateMachine<RunLevel>("the run level", time, RunLevel.Init, Name);
+        levels.Declare(RunLevel.EStop, null, RunLevel.Init);
+        levels.Declare(RunLevel.Init, null, RunLevel.Homing, RunLevel.EStop);
+        levels.Declare(RunLevel.Homing, null, RunLevel.PedalUp, RunLevel.Init, RunLevel.EStop);
+        levels.Declare(RunLevel.PedalUp, null, RunLevel.PedalDown, RunLevel.Init, RunLevel.EStop);
+        levels.Declare(RunLevel.PedalDown, null, RunLevel.PedalUp, RunLevel.EStop);
+        return levels;
+    }
+}

@@ -3,12 +3,13 @@ using RobotControl.Hardware.Model;
 using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
+using RobotControl.Robot.Control.States;
 using RobotControl.Robot.States;
 
 namespace RobotControl.Host.Safety;
 
 /// <summary>
-/// Owns the question "is it safe to move?": the run level (<see cref="RunLevelMachine"/>), the operator's commands
+/// Owns the question "is it safe to move?": the run level (<see cref="RunLevels.NewMachine"/>), the operator's commands
 /// (home, pedal, emergency stop, reset) and the per-cycle checks, the cycle's step <b>check</b> after read and publish
 /// (<see cref="BusRobot.Check"/>), allocation-free while nothing trips. Outside
 /// <see cref="RunLevel.PedalDown"/> the robot holds (goals frozen at the measured positions: teleoperation is
@@ -36,7 +37,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private const string PedalSource = "pedal";
     private readonly BusRobot _robot;
     private readonly TimeProvider _time;
-    private readonly RunLevelMachine _levels;
+    private readonly StateMachine<RunLevel> _levels;
     private readonly List<SafetyTrip> _trips = new(32);
     private readonly Lock _tripGate = new();
     private readonly RobotMotor[] _motors;
@@ -79,7 +80,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         _time = robot.Client.Time;
         Limits = limits;
         LoopPeriod = loopPeriod;
-        _levels = new RunLevelMachine(_time);
+        _levels = RunLevels.NewMachine(_time);
         _motors = [.. robot.Motors];
         _controllers = [.. robot.Controllers];
         _motorNames = [.. _motors.Select(m => m.Config.FullName)];
@@ -118,7 +119,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     public RunLevel Level => _levels.Current;
 
     /// <summary>Every run-level change, oldest first.</summary>
-    public IReadOnlyList<RunLevelTransition> History => _levels.History;
+    public IReadOnlyList<StateTransition<RunLevel>> History => _levels.History;
 
     /// <summary>Every trip, oldest first (a copy).</summary>
     public IReadOnlyList<SafetyTrip> Trips

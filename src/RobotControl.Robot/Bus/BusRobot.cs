@@ -3,6 +3,7 @@ using RobotControl.Bus.Client;
 using RobotControl.Hardware.Model;
 using RobotControl.Kinematics.Coupling;
 using RobotControl.Robot.Control;
+using RobotControl.Robot.Control.States;
 using RobotControl.Robot.Events;
 using RobotControl.Robot.States;
 
@@ -119,8 +120,8 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     /// <summary>The robot's state now.</summary>
     public RobotState State => _life.State;
 
-    /// <summary>Every state change so far with its time and reason, oldest first.</summary>
-    public IReadOnlyList<RobotTransition> StateHistory => _life.Machine.History;
+    /// <summary>Every state change so far with its time, source and reason, oldest first.</summary>
+    public IReadOnlyList<StateTransition<RobotState>> StateHistory => _life.Machine.History;
 
     /// <inheritdoc />
     public RobotFaults Faults => _faults.Value;

@@ -1,6 +1,7 @@
 using RobotControl.Hardware.Model;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
+using RobotControl.Robot.Control.States;
 using RobotControl.Robot.States;
 
 namespace RobotControl.Host.Tests.Safety;
@@ -121,15 +122,59 @@ public sealed class RunLevelTests
     }
 
     [Fact]
-    public void The_declared_table_refuses_moves_it_does_not_list()
+    public void The_run_levels_are_declared_once_with_the_levels_that_may_follow_and_nothing_leaves_e_stop_but_init()
     {
-        var machine = new RunLevelMachine(TimeProvider.System);
-        var error = Assert.Throws<InvalidOperationException>(() => machine.MoveTo(RunLevel.PedalDown, "pedal", "test"));
-        Assert.Contains("INIT cannot go to PEDAL_DOWN", error.Message, StringComparison.Ordinal);
-        Assert.Equal(RunLevel.Init, machine.Current);
-        machine.MoveTo(RunLevel.EStop, "cli", "operator stop");
-        Assert.False(machine.CanMoveTo(RunLevel.PedalUp));
-        Assert.True(machine.CanMoveTo(RunLevel.Init));
-        Assert.Single(machine.History);
+        RunLevel[] all = Enum.GetValues<RunLevel>();
+        var follows = new Dictionary<RunLevel, RunLevel[]>
+        {
+            [RunLevel.EStop] = [RunLevel.Init],
+            [RunLevel.Init] = [RunLevel.Homing, RunLevel.EStop],
+            [RunLevel.Homing] = [RunLevel.PedalUp, RunLevel.Init, RunLevel.EStop],
+            [RunLevel.PedalUp] = [RunLevel.PedalDown, RunLevel.Init, RunLevel.EStop],
+            [RunLevel.PedalDown] = [RunLevel.PedalUp, RunLevel.EStop],
+        };
+        foreach (var from in all)
+        {
+            foreach (var to in all.Where(l => l != from))
+            {
+                var machine = RunLevels.NewMachine(TimeProvider.System);
+                Assert.True(PathTo(machine, from));
+                var historyBefore = machine.History.Count;
+                if (follows[from].Contains(to))
+                {
+                    Assert.True(machine.MoveTo(to, "test", $"{from.Name()} to {to.Name()}"));
+                    Assert.Equal(to, machine.Current);
+                }
+                else
+                {
+                    Assert.Throws<InvalidOperationException>(() => machine.MoveTo(to, "test", "not declared"));
+                    Assert.Equal((from, historyBefore), (machine.Current, machine.History.Count));
+                }
+            }
+        }
+
+        var levels = RunLevels.NewMachine(TimeProvider.System);
+        var error = Assert.Throws<InvalidOperationException>(() => levels.MoveTo(RunLevel.PedalDown, "pedal", "test"));
+        Assert.Equal("the run level cannot go from INIT to PEDAL_DOWN (pedal: test); from INIT it may go to HOMING, E_STOP", error.Message);
+        Assert.Equal(RunLevel.Init, levels.Current);
+    }
+
+    /// <summary>Takes a fresh machine (at INIT) to <paramref name="level"/> through declared moves.</summary>
+    private static bool PathTo(StateMachine<RunLevel> machine, RunLevel level)
+    {
+        RunLevel[] path = level switch
+        {
+            RunLevel.EStop => [RunLevel.EStop],
+            RunLevel.Init => [],
+            RunLevel.Homing => [RunLevel.Homing],
+            RunLevel.PedalUp => [RunLevel.Homing, RunLevel.PedalUp],
+            _ => [RunLevel.Homing, RunLevel.PedalUp, RunLevel.PedalDown],
+        };
+        foreach (var l in path)
+        {
+            machine.MoveTo(l, "test", "on the way");
+        }
+
+        return machine.Current == level;
     }
 }

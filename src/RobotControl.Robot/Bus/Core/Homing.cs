@@ -20,11 +20,14 @@ namespace RobotControl.Robot.Bus;
 [WrittenBy(RobotThread.Bus)]
 internal sealed class Homing(RobotLayout layout, BusClient client, ModuleRoster roster, RobotLifecycle life, RobotSetup setup, FeedbackExchange feedback)
 {
+    /// <summary>The source of the moves homing makes.</summary>
+    private const string Source = "homing";
+
     public IReadOnlyList<HomingResult> HomeAll()
     {
         life.Machine.Require("homing", "it needs the robot discovered and the motors off: a driven motor must not change coordinates under the control loop; call EnableTorque(false) first", RobotState.Discovered, RobotState.Homed);
         var active = roster.Active.Controllers;
-        life.Machine.MoveTo(RobotState.Homing, $"homing {active.Length} modules from their pots");
+        life.Machine.MoveTo(RobotState.Homing, Source, $"homing {active.Length} modules from their pots");
         var results = new List<HomingResult>();
         try
         {
@@ -39,7 +42,7 @@ internal sealed class Homing(RobotLayout layout, BusClient client, ModuleRoster 
         {
             var failed = results.Count(r => !r.Succeeded);
             var done = failed == 0 && results.Count == active.Sum(c => c.Motors.Count);
-            life.Machine.MoveTo(done ? RobotState.Homed : RobotState.Discovered, done ? $"{results.Count} motors homed and verified" : $"homing incomplete: {failed} of {results.Count} motors not homed");
+            life.Machine.MoveTo(done ? RobotState.Homed : RobotState.Discovered, Source, done ? $"{results.Count} motors homed and verified" : $"homing incomplete: {failed} of {results.Count} motors not homed");
         }
 
         return results;

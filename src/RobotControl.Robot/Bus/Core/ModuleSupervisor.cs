@@ -67,10 +67,7 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
         }
 
         faults.ClearLatched();
-        if (life.State == States.RobotState.Fault)
-        {
-            life.Machine.MoveTo(life.TorqueEnabled ? States.RobotState.Enabled : life.MotorsOffState, "faults cleared");
-        }
+        life.LeaveFault("faults cleared");
     }
 
     /// <summary>A module's reset cause from before the host connected is history, not a fault: note it and clear it.</summary>

@@ -1,24 +1,27 @@
+using RobotControl.Robot.Control.States;
 using RobotControl.Robot.States;
 
 namespace RobotControl.Robot.Bus;
 
 /// <summary>
-/// The robot's life (<see cref="RobotStateMachine"/>), its states each declared once with what entering them does:
-/// <see cref="RobotState.Disabled"/> -> <see cref="RobotState.Discovered"/> -> <see cref="RobotState.Homing"/> ->
-/// <see cref="RobotState.Homed"/> -> <see cref="RobotState.Enabled"/>, and <see cref="RobotState.Fault"/> when a module
-/// stops its motors. Torque is on in <see cref="RobotState.Enabled"/> and stays as it was in <see cref="RobotState.Fault"/>
-/// (the modules stopped their motors; clearing the faults re-arms them). Moved by the bus thread alone (set-up runs
-/// between cycles, supervision in the cycle).
+/// The robot's life (a <see cref="StateMachine{TState}"/> of <see cref="RobotState"/>), its states each declared once
+/// with what entering them does: <see cref="RobotState.Disabled"/> -> <see cref="RobotState.Discovered"/> ->
+/// <see cref="RobotState.Homing"/> -> <see cref="RobotState.Homed"/> -> <see cref="RobotState.Enabled"/>, and
+/// <see cref="RobotState.Fault"/> when a module stops its motors. Torque is on in <see cref="RobotState.Enabled"/> and
+/// stays as it was in <see cref="RobotState.Fault"/> (the modules stopped their motors; clearing the faults re-arms
+/// them). Moved by the bus thread alone (set-up runs between cycles, supervision in the cycle).
 /// </summary>
 [WrittenBy(RobotThread.Bus)]
 internal sealed class RobotLifecycle
 {
+    /// <summary>The source of the moves module supervision makes (faults and their clearing).</summary>
+    private const string ModulesSource = "modules";
     private volatile bool _torqueEnabled;
     private volatile bool _homed;
 
     public RobotLifecycle(TimeProvider time)
     {
-        Machine = new RobotStateMachine(time);
+        Machine = new StateMachine<RobotState>("the robot", time, RobotState.Disabled);
         Machine.Declare(RobotState.Disabled, null, RobotState.Discovered);
         Machine.Declare(RobotState.Discovered, () => (_torqueEnabled, _homed) = (false, false), RobotState.Homing, RobotState.Enabled, RobotState.Fault);
         Machine.Declare(RobotState.Homing, () => _torqueEnabled = false, RobotState.Homed, RobotState.Discovered);
@@ -27,7 +30,7 @@ internal sealed class RobotLifecycle
         Machine.Declare(RobotState.Fault, null, RobotState.Enabled, RobotState.Discovered, RobotState.Homed);
     }
 
-    public RobotStateMachine Machine { get; }
+    public StateMachine<RobotState> Machine { get; }
 
     public RobotState State => Machine.Current;
 
@@ -38,11 +41,11 @@ internal sealed class RobotLifecycle
     public RobotState MotorsOffState => _homed ? RobotState.Homed : RobotState.Discovered;
 
     /// <summary>Motors off: to <see cref="MotorsOffState"/> unless the robot was never discovered.</summary>
-    public void MotorsOff(string reason)
+    public void MotorsOff(string source, string reason)
     {
         if (Machine.Current != RobotState.Disabled)
         {
-            Machine.MoveTo(MotorsOffState, reason);
+            Machine.MoveTo(MotorsOffState, source, reason);
         }
     }
 
@@ -51,7 +54,16 @@ internal sealed class RobotLifecycle
     {
         if (Machine.CanMoveTo(RobotState.Fault))
         {
-            Machine.MoveTo(RobotState.Fault, reason);
+            Machine.MoveTo(RobotState.Fault, ModulesSource, reason);
+        }
+    }
+
+    /// <summary>Faults cleared: from <see cref="RobotState.Fault"/> back to <see cref="RobotState.Enabled"/> if the motors were on, else to <see cref="MotorsOffState"/>.</summary>
+    public void LeaveFault(string reason)
+    {
+        if (Machine.Current == RobotState.Fault)
+        {
+            Machine.MoveTo(_torqueEnabled ? RobotState.Enabled : MotorsOffState, ModulesSource, reason);
         }
     }
 }

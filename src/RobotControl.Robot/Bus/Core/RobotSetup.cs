@@ -2,6 +2,7 @@ using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Modules;
 using RobotControl.Robot.Control;
+using RobotControl.Robot.Control.States;
 using RobotControl.Robot.Events;
 using RobotControl.Robot.States;
 
@@ -14,9 +15,12 @@ namespace RobotControl.Robot.Bus;
 [WrittenBy(RobotThread.Bus)]
 internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRoster roster, RobotEventStream events, RobotFaultFlags faults, RobotLifecycle life, ModuleArming arming, ModuleSupervisor supervisor, FeedbackExchange feedback, SetpointExchange setpoints, GoalSeed seed)
 {
+    /// <summary>The source of the moves set-up makes.</summary>
+    private const string Source = "setup";
+
     private readonly ParameterWriter _parameters = new(client, layout.Table);
 
-    private RobotStateMachine State => life.Machine;
+    private StateMachine<RobotState> State => life.Machine;
 
     public DiscoveryReport Discover()
     {
@@ -79,7 +83,7 @@ internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRos
         }
 
         faults.SetLive(RobotFaults.ModuleMissing, report.Missing.Count > 0 || mismatched.Count > 0);
-        State.MoveTo(RobotState.Discovered, $"discovery: {report.Present.Count} of {layout.Controllers.Length} modules as configured");
+        State.MoveTo(RobotState.Discovered, Source, $"discovery: {report.Present.Count} of {layout.Controllers.Length} modules as configured");
         return report;
     }
 
@@ -144,13 +148,13 @@ internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRos
                 arming.Arm(c, true);
             }
 
-            State.MoveTo(RobotState.Enabled, "motors on");
+            State.MoveTo(RobotState.Enabled, Source, "motors on");
             return;
         }
 
         State.Require("turning the motors off", "wait for homing to end", RobotState.Disabled, RobotState.Discovered, RobotState.Homed, RobotState.Enabled, RobotState.Fault);
         var refused = arming.DisarmAll();
-        life.MotorsOff("motors off");
+        life.MotorsOff(Source, "motors off");
         if (refused is not null)
         {
             throw refused; // after the move: the others are off, and the robot knows it
@@ -166,7 +170,7 @@ internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRos
         }
 
         _ = arming.DisarmAll();
-        life.MotorsOff(reason);
+        life.MotorsOff("emergency hold", reason);
     }
 
     public Reply Reboot(byte moduleId)
