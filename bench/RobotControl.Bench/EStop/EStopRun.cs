@@ -71,14 +71,15 @@ internal sealed class EStopRun : IAsyncDisposable
     }
 
     /// <summary>
-    /// One stop: waits for PEDAL_UP or PEDAL_DOWN, runs <paramref name="beforeStop"/> (e.g. queues work), sends the
+    /// One stop: waits for PEDAL_UP or PEDAL_DOWN and then <paramref name="settle"/>, runs <paramref name="beforeStop"/> (e.g. queues work), sends the
     /// E-STOP and returns the milliseconds from its arrival at the server to its first stop frame on the wire; then
     /// awaits <paramref name="beforeStop"/>'s work and resets to PEDAL_UP.
     /// </summary>
     /// <exception cref="InvalidOperationException">The stop was refused, no stop frame came, or the robot did not come back.</exception>
-    public async Task<double> Stop(Func<Task<Task>>? beforeStop)
+    public async Task<double> Stop(TimeSpan settle, Func<Task<Task>>? beforeStop)
     {
         await WaitForLevel(["PEDAL_UP", "PEDAL_DOWN"]).ConfigureAwait(false);
+        await Task.Delay(settle).ConfigureAwait(false);
         var queued = beforeStop is null ? Task.CompletedTask : await beforeStop().ConfigureAwait(false);
         using (var response = await _watcher.PostAsync(EStopPath.TrimStart('/'), null).ConfigureAwait(false))
         {
