@@ -101,7 +101,7 @@ internal sealed class EStopBenchCommand : IBenchCommand
         var loadStart = RealtimeBenchCommand.LoadAverage();
         var since = Stopwatch.GetTimestamp();
         var flood = name == "flood" ? FloodLoad.Start(run.BaseUrl, settings.FloodRate, settings.FloodClients) : null;
-        var latencies = new double[settings.Stops];
+        var samples = new StopSample[settings.Stops];
         var pendingAtStop = 0L;
         double floodRate = 0;
         long floodFailed = 0;
@@ -114,9 +114,9 @@ internal sealed class EStopBenchCommand : IBenchCommand
                 pendingAtStop += work.Count(t => !t.IsCompleted);
                 return Task.WhenAll(work);
             } : null;
-            for (var i = 0; i < latencies.Length; i++)
+            for (var i = 0; i < samples.Length; i++)
             {
-                latencies[i] = await run.Stop(TimeSpan.FromMilliseconds(settings.SettleMs), before).ConfigureAwait(false);
+                samples[i] = await run.Stop(TimeSpan.FromMilliseconds(settings.SettleMs), before).ConfigureAwait(false);
             }
         }
         finally
@@ -129,7 +129,8 @@ internal sealed class EStopBenchCommand : IBenchCommand
             }
         }
 
-        Array.Sort(latencies);
+        var latencies = Sorted(samples.Select(x => x.LatencyMs));
+        var silent = Sorted(samples.Select(x => x.BusSilentAtArrivalMs));
         var periods = run.CyclePeriodsMs(since);
         Array.Sort(periods);
         var cycle = periods.Length == 0 ? double.NaN : RealtimeBenchCommand.Quantile(periods, 0.5);
@@ -144,11 +145,21 @@ internal sealed class EStopBenchCommand : IBenchCommand
             cycle,
             cycle + TargetMarginMs,
             p99 <= cycle + TargetMarginMs,
+            samples.Count(x => !x.Confirmed),
+            RealtimeBenchCommand.Quantile(silent, 0.99),
+            silent[^1],
             name == "queued" ? pendingAtStop / (double)latencies.Length : null,
             name == "flood" ? floodRate : null,
             name == "flood" ? floodFailed : null,
             loadStart,
             RealtimeBenchCommand.LoadAverage());
+    }
+
+    private static double[] Sorted(IEnumerable<double> values)
+    {
+        var array = values.ToArray();
+        Array.Sort(array);
+        return array;
     }
 
     /// <summary>How long after queueing the reloads the stop is sent: long enough for the first to be running.</summary>
@@ -179,6 +190,9 @@ internal sealed record EStopResult(
     double BusCycleMedianMs,
     double TargetP99Ms,
     bool Pass,
+    int NotConfirmedWithin1S,
+    double BusSilentAtArrivalP99Ms,
+    double BusSilentAtArrivalMaxMs,
     double? QueuedPendingAtStop,
     double? FloodAnsweredPerSecond,
     long? FloodFailed,
@@ -187,5 +201,5 @@ internal sealed record EStopResult(
 {
     /// <summary>One line for the console.</summary>
     public string Line() => string.Create(CultureInfo.InvariantCulture,
-        $"{Scenario}: {Stops} stops, latency p50 {P50Ms:F2} ms, p99 {P99Ms:F2} ms, max {MaxMs:F2} ms (min {MinMs:F2}); bus cycle median {BusCycleMedianMs:F2} ms; target p99 <= {TargetP99Ms:F2} ms: {(Pass ? "PASS" : "FAIL")}{(QueuedPendingAtStop is { } pending ? $"; reloads still queued or running at the stop {pending:F1} (mean)" : string.Empty)}{(FloodAnsweredPerSecond is { } rate ? $"; flood {rate:F0} answered/s, {FloodFailed} failed" : string.Empty)}; load {LoadAverageAtStart} -> {LoadAverageAtEnd}");
+        $"{Scenario}: {Stops} stops, latency p50 {P50Ms:F2} ms, p99 {P99Ms:F2} ms, max {MaxMs:F2} ms (min {MinMs:F2}); bus cycle median {BusCycleMedianMs:F2} ms; target p99 <= {TargetP99Ms:F2} ms: {(Pass ? "PASS" : "FAIL")}; bus silent at arrival p99 {BusSilentAtArrivalP99Ms:F2} ms, max {BusSilentAtArrivalMaxMs:F2} ms; E_STOP not confirmed within 1 s: {NotConfirmedWithin1S}{(QueuedPendingAtStop is { } pending ? $"; reloads still queued or running at the stop {pending:F1} (mean)" : string.Empty)}{(FloodAnsweredPerSecond is { } rate ? $"; flood {rate:F0} answered/s, {FloodFailed} failed" : string.Empty)}; load {LoadAverageAtStart} -> {LoadAverageAtEnd}");
 }

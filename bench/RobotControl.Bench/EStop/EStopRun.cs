@@ -17,7 +17,7 @@ namespace RobotControl.Bench.EStop;
 internal sealed class EStopRun : IAsyncDisposable
 {
     private const string EStopPath = "/api/estop";
-    private static readonly TimeSpan FrameWait = TimeSpan.FromSeconds(2);
+    private static readonly TimeSpan FrameWait = TimeSpan.FromSeconds(10);
     private static readonly TimeSpan ReadyWait = TimeSpan.FromSeconds(60);
     private readonly HeadlessSession _session;
     private readonly EStopTapLink _tap;
@@ -71,22 +71,21 @@ internal sealed class EStopRun : IAsyncDisposable
     }
 
     /// <summary>
-    /// One stop: waits for PEDAL_UP or PEDAL_DOWN and then <paramref name="settle"/>, runs <paramref name="beforeStop"/> (e.g. queues work), sends the
-    /// E-STOP and returns the milliseconds from its arrival at the server to its first stop frame on the wire; then
+    /// One stop: waits for PEDAL_UP or PEDAL_DOWN and then <paramref name="settle"/>, runs <paramref name="beforeStop"/>
+    /// (e.g. queues work), sends the E-STOP and measures from its arrival at the server to its first stop frame on the
+    /// wire (whatever the console answers: a 503 says the run level had not reached E_STOP within its 1 s); then
     /// awaits <paramref name="beforeStop"/>'s work and resets to PEDAL_UP.
     /// </summary>
-    /// <exception cref="InvalidOperationException">The stop was refused, no stop frame came, or the robot did not come back.</exception>
-    public async Task<double> Stop(TimeSpan settle, Func<Task<Task>>? beforeStop)
+    /// <exception cref="InvalidOperationException">No stop frame came, or the robot did not come back.</exception>
+    public async Task<StopSample> Stop(TimeSpan settle, Func<Task<Task>>? beforeStop)
     {
         await WaitForLevel(["PEDAL_UP", "PEDAL_DOWN"]).ConfigureAwait(false);
         await Task.Delay(settle).ConfigureAwait(false);
         var queued = beforeStop is null ? Task.CompletedTask : await beforeStop().ConfigureAwait(false);
+        bool confirmed;
         using (var response = await _watcher.PostAsync(EStopPath.TrimStart('/'), null).ConfigureAwait(false))
         {
-            if (!response.IsSuccessStatusCode)
-            {
-                throw new InvalidOperationException($"POST {EStopPath}: {(int)response.StatusCode} {await response.Content.ReadAsStringAsync().ConfigureAwait(false)}");
-            }
+            confirmed = response.IsSuccessStatusCode;
         }
 
         var waited = Stopwatch.StartNew();
@@ -95,24 +94,27 @@ internal sealed class EStopRun : IAsyncDisposable
         {
             if (waited.Elapsed > FrameWait)
             {
-                throw new InvalidOperationException($"no {_tap.Wanted} frame on the wire within {FrameWait.TotalSeconds:0} s of the E-STOP");
+                throw new InvalidOperationException($"no {_tap.Wanted} frame on the wire within {FrameWait.TotalSeconds:0} s of the E-STOP's answer ({(confirmed ? "E_STOP confirmed" : "E_STOP not confirmed")})");
             }
 
             await Task.Delay(1).ConfigureAwait(false);
         }
 
-        var latencyMs = (frame - _tap.ArrivedAt) * 1000.0 / Stopwatch.Frequency;
+        var arrival = _tap.ArrivedAt;
+        var lastCycle = _tap.CycleStartsSince(arrival - (FrameWait.Ticks * Stopwatch.Frequency / TimeSpan.TicksPerSecond)).Where(t => t < arrival).DefaultIfEmpty(arrival).Max();
         await queued.WaitAsync(ReadyWait).ConfigureAwait(false);
         await Reset().ConfigureAwait(false);
-        return latencyMs;
+        return new StopSample(Ms(frame - arrival), Ms(arrival - lastCycle), confirmed);
     }
 
     /// <summary>Bus cycle periods (goal SYNC WRITE to goal SYNC WRITE), milliseconds, from <paramref name="since"/> (a <see cref="Stopwatch"/> timestamp).</summary>
     public double[] CyclePeriodsMs(long since)
     {
         var starts = _tap.CycleStartsSince(since);
-        return [.. starts.Skip(1).Select((t, i) => (t - starts[i]) * 1000.0 / Stopwatch.Frequency)];
+        return [.. starts.Skip(1).Select((t, i) => Ms(t - starts[i]))];
     }
+
+    private static double Ms(long stopwatchTicks) => stopwatchTicks * 1000.0 / Stopwatch.Frequency;
 
     /// <summary>Queues <paramref name="count"/> parameter reloads of the modules (round robin) on the session, as the console's reload button does.</summary>
     public Task[] QueueReloads(int count)
@@ -172,3 +174,10 @@ internal sealed class EStopRun : IAsyncDisposable
         _session.Dispose();
     }
 }
+
+/// <summary>
+/// One stop: milliseconds from the request's arrival to the first stop frame; how long the bus had written no goals
+/// when the request arrived (a bus that had stopped cycling: the session sleeping or not scheduled); whether the
+/// console confirmed E_STOP (within its 1 s).
+/// </summary>
+internal readonly record struct StopSample(double LatencyMs, double BusSilentAtArrivalMs, bool Confirmed);
