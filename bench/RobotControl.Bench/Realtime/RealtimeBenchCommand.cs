@@ -230,9 +230,9 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         return periods;
     }
 
-    private static double Quantile(double[] sorted, double q) => sorted[Math.Min(sorted.Length - 1, (int)Math.Ceiling(q * sorted.Length) - 1)];
+    internal static double Quantile(double[] sorted, double q) => sorted[Math.Min(sorted.Length - 1, (int)Math.Ceiling(q * sorted.Length) - 1)];
 
-    private static string LoadAverage()
+    internal static string LoadAverage()
     {
         try
         {
@@ -244,7 +244,7 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         }
     }
 
-    private static string? Arg(string[] args, string name)
+    internal static string? Arg(string[] args, string name)
     {
         var i = Array.IndexOf(args, name);
         return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;

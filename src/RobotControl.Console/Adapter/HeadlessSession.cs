@@ -78,7 +78,7 @@ public sealed partial class HeadlessSession : IConsoleSession
         var slot = new ObserverSlot();
         var faults = new ConsoleFaults(options.Inject, options.Virtual);
         _session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot, Robot = new BusRobotOptions { DetailPollCycles = DetailPollCycles } },
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, WrapLink = options.WrapLink, Observer = (_, _) => slot, Robot = new BusRobotOptions { DetailPollCycles = DetailPollCycles } },
             options.Catalog);
         _robot = _session.Connection.Definition!;
         _bus = _session.Robot;

@@ -33,4 +33,7 @@ public sealed record HeadlessSessionOptions
     /// null: normal scheduling. The virtual robot runs paced on the session thread and ignores it.
     /// </summary>
     public RealtimeThreads? Threads { get; init; }
+
+    /// <summary>Wraps the host's end of the bus (benchmarks: timestamp frames); passed to the session layer (<see cref="Host.Session.SessionOptions.WrapLink"/>).</summary>
+    public Func<RobotControl.Bus.Transports.IByteLink, TimeProvider, RobotControl.Bus.Transports.IByteLink>? WrapLink { get; init; }
 }

@@ -39,8 +39,10 @@ public sealed class ConsoleServer : IAsyncDisposable
     /// <summary>
     /// Starts serving <paramref name="session"/> on <paramref name="bind"/>. A non-loopback bind without
     /// <paramref name="token"/> gets a generated one. With <paramref name="editor"/>, the graph editor's API too.
+    /// <paramref name="first"/> (benchmarks, diagnostics) is the outermost middleware: it sees every request as soon as
+    /// the server has read its headers, before access control and routing.
     /// </summary>
-    public static async Task<ConsoleServer> StartAsync(IConsoleSession session, BindAddress bind, string? token, TimeProvider? time = null, Editor.GraphEditor? editor = null)
+    public static async Task<ConsoleServer> StartAsync(IConsoleSession session, BindAddress bind, string? token, TimeProvider? time = null, Editor.GraphEditor? editor = null, Func<Microsoft.AspNetCore.Http.HttpContext, Microsoft.AspNetCore.Http.RequestDelegate, Task>? first = null)
     {
         ArgumentNullException.ThrowIfNull(session);
         ArgumentNullException.ThrowIfNull(bind);
@@ -56,6 +58,11 @@ public sealed class ConsoleServer : IAsyncDisposable
         var app = builder.Build();
         var server = new ConsoleServer(app, token) { Operator = new OperatorRole(time ?? TimeProvider.System) };
         var access = new AccessControl(token);
+        if (first is not null)
+        {
+            app.Use(first);
+        }
+
         app.UseWebSockets(new WebSocketOptions { KeepAliveInterval = TimeSpan.FromSeconds(15) });
         app.Use(access.Invoke);
         ApiEndpoints.Map(app, session, server.Operator);
