@@ -135,6 +135,12 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     /// <summary>True while the goals are frozen at the measured positions (<see cref="HoldAtMeasured"/>).</summary>
     public bool IsHolding => _goals.IsHolding;
 
+    /// <summary>
+    /// True from an emergency stop's request (<see cref="EmergencyHold"/>) until the write that takes it: whoever runs
+    /// the cycle must not wait now (a virtual schedule pacing itself to the wall clock stops sleeping).
+    /// </summary>
+    public bool StopPending => _stop.IsRaised;
+
     /// <summary>Methods the JIT compiled on the bus thread after its first cycle; known once the thread has ended (<see cref="Stop"/>).</summary>
     public long MethodsCompiledAfterFirstCycle => _thread.MethodsCompiledAfterFirstCycle;
 
