@@ -15,11 +15,11 @@ public sealed class SessionLoopCodeTests
     [Fact]
     public void The_console_session_holds_no_bus_client_transport_or_simulator_of_its_own()
     {
-        var fields = typeof(HeadlessSession).GetFields(BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public);
+        var fields = typeof(LiveSession).GetFields(BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public);
         var own = fields.Where(f => typeof(BusClient).IsAssignableFrom(f.FieldType) || typeof(IByteLink).IsAssignableFrom(f.FieldType) || typeof(VirtualRobot).IsAssignableFrom(f.FieldType)).Select(f => f.Name).ToList();
 
         Assert.NotEmpty(fields);
         Assert.True(own.Count == 0, $"the console keeps bus parts of its own: {string.Join(", ", own)}");
-        Assert.Null(typeof(HeadlessSession).GetMethod("RunRealTime", BindingFlags.Instance | BindingFlags.NonPublic)?.GetCustomAttribute<System.Runtime.CompilerServices.MethodImplAttribute>());
+        Assert.Null(typeof(LiveSession).GetMethod("RunRealTime", BindingFlags.Instance | BindingFlags.NonPublic)?.GetCustomAttribute<System.Runtime.CompilerServices.MethodImplAttribute>());
     }
 }

@@ -52,7 +52,7 @@ public sealed class EmergencyStopTests
         Assert.All(cut, r => Assert.Contains("cut short before its next bus transaction", r.Message, StringComparison.Ordinal));
     }
 
-    private static HeadlessSession Open() => new(new HeadlessSessionOptions
+    private static LiveSession Open() => new(new LiveSessionOptions
     {
         GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"),
         Catalog = ConsoleFixture.Catalog(),

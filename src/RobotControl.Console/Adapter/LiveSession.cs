@@ -22,7 +22,7 @@ namespace RobotControl.WebConsole.Adapter;
 /// (status, resets, watchdog, torque read back, motor errors), published with the run status every 100 ms by a
 /// thread of its own. The ring is fed by the loop's tick observer.
 /// </summary>
-public sealed partial class HeadlessSession : IConsoleSession
+public sealed partial class LiveSession : IConsoleSession
 {
     private static readonly TimeSpan PublishEvery = TimeSpan.FromMilliseconds(100);
 
@@ -71,7 +71,7 @@ public sealed partial class HeadlessSession : IConsoleSession
     /// <exception cref="InvalidOperationException">The graph names no robot, or the transport does not fit.</exception>
     /// <exception cref="IOException">The transport cannot be opened.</exception>
     /// <exception cref="FormatException">An injected fault is not one the console takes, or names no module.</exception>
-    public HeadlessSession(HeadlessSessionOptions options)
+    public LiveSession(LiveSessionOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
         _threads = options.Threads ?? Host.Realtime.RealtimeThreads.Default;

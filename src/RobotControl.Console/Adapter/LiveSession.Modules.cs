@@ -5,7 +5,7 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>The modules' parameters as the bus page shows them: read once per module, between bus cycles, one module at a time.</summary>
-public sealed partial class HeadlessSession
+public sealed partial class LiveSession
 {
     /// <summary>
     /// The status thread's turn: when no read is under way, the next module waiting has its parameters read between

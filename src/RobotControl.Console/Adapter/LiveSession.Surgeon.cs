@@ -6,7 +6,7 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>The surgeon's view: hands and pedals found in the graph, faults in plain words, workspace, scale factor.</summary>
-public sealed partial class HeadlessSession
+public sealed partial class LiveSession
 {
     /// <summary>Tool-tip samples per arm: every joint within its limits, and with one joint at a limit.</summary>
     private const int WorkspaceInterior = 4000;

@@ -9,7 +9,7 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>The console's commands: validated on the caller's thread, applied on the session thread between bus cycles.</summary>
-public sealed partial class HeadlessSession
+public sealed partial class LiveSession
 {
     /// <summary>The longest friendly name.</summary>
     private const int MaxNameLength = 40;
