@@ -1,71 +1,56 @@
 using System.Diagnostics;
-using RobotControl.Hardware.Model;
-using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Kinematics.Urdf;
-using RobotControl.Modules;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Robot.Bus;
-using RobotControl.Robot.Control;
 using RobotControl.Runtime.Loop;
 using RobotControl.WebConsole.Session;
 
 namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>
-/// The console's session: a <see cref="RobotSession"/> (graph, robot, bus, safety supervisor, control loop, brought up
-/// by the session layer) run on the robot's one bus cycle. On the virtual robot the session layer's
+/// The console's live session on a robot: a <see cref="RobotSession"/> (graph, robot, bus, safety supervisor, control
+/// loop, brought up by the session layer) run on the robot's one bus cycle. On the virtual robot the session layer's
 /// <see cref="VirtualSchedule"/> runs the cycles and ticks the loop on the session thread, paced to the wall clock; on a
 /// real bus the session layer's bus thread and loop thread run them (<see cref="RobotSession.StartBus"/>). The console's
 /// commands run in the robot's slot between cycles (<see cref="CommandQueue"/>); an emergency stop goes to the
 /// supervisor directly. It has no bus client of its own: what it shows of the modules is what the robot core found
 /// (status, resets, watchdog, torque read back, motor errors), published with the run status every 100 ms by a
-/// thread of its own. The ring is fed by the loop's tick observer.
+/// thread of its own (<see cref="StatusPublisher"/>). The ring is fed by the loop's tick observer.
+/// <para>
+/// This type is the session's life: it opens the session, runs the session thread and closes it with the stop's
+/// report; the state it owns (the session thread, the end) is written by the session thread and by
+/// <see cref="Close"/> under a lock. Each other part owns its own state: <see cref="SessionEvents"/>,
+/// <see cref="RunLevelLog"/>, <see cref="SessionModules"/>, <see cref="ModuleParameters"/>,
+/// <see cref="SessionThreadState"/>, <see cref="StatusPublisher"/>, <see cref="SurgeonStation"/>; the commands
+/// (<see cref="ModuleCommands"/>, <see cref="MotorCommands"/>, <see cref="RunLevelCommands"/>) own none.
+/// </para>
 /// </summary>
-public sealed partial class LiveSession : IConsoleSession
+public sealed class LiveSession : IConsoleSession
 {
-    private static readonly TimeSpan PublishEvery = TimeSpan.FromMilliseconds(100);
-
     /// <summary>Cycles between two reads of one module's torque and motor errors (the modules in turn).</summary>
     private const int DetailPollCycles = 50;
 
-    /// <summary>How many times a module's parameters are tried before they are left unknown.</summary>
-    private const int ParameterReadTries = 5;
-
     private readonly RobotSession _session;
-    private readonly TimeProvider _clock;
-    private readonly RobotDefinition _robot;
-    private readonly BusRobot _bus;
-    private readonly SafetySupervisor _supervisor;
     private readonly RingRecorder _recorder;
-    private readonly CommandQueue _commands;
-    private readonly Session.EventLog _events = new();
-    private readonly RobotControl.Robot.Events.RobotEventSubscription _robotEvents;
-    private readonly System.Collections.Concurrent.ConcurrentDictionary<int, string> _names = [];
-    private readonly System.Collections.Concurrent.ConcurrentDictionary<(int Module, int Channel, string Key), double> _parameters = [];
-    private readonly System.Collections.Concurrent.ConcurrentQueue<RobotController> _pendingReads = new();
-    private readonly Dictionary<int, int> _parameterTries = [];
-    private readonly TickStatistics _busTiming = new();
+    private readonly CommandQueue _queue;
+    private readonly SessionEvents _events;
+    private readonly SessionThreadState _sessionThread = new();
+    private readonly StatusPublisher _publisher;
+    private readonly ModuleCommands _modules;
+    private readonly MotorCommands _motors;
+    private readonly RunLevelCommands _runLevel;
+    private readonly SurgeonStation _surgeon;
     private readonly CancellationTokenSource _stop = new();
     private readonly Lock _closeLock = new();
-    private readonly Lock _logGate = new();
     private readonly Host.Realtime.RealtimeThreads _threads;
     private readonly Thread _thread;
-    private readonly Thread _publisher;
-    private readonly long _begin;
-    private Task<CommandResult>? _parameterRead;
-    private volatile SessionStatus _statusView;
-    private volatile IReadOnlyList<ControllerView> _controllersView = [];
-    private volatile string _state = "starting";
-    private int _levelsLogged;
-    private int _tripsLogged;
-    private long _tickAllocatedBytes;
-    private int _found;
     private SessionEnd? _end;
 
     /// <summary>
     /// Brings the session up through the session layer (graph, robot, discovery, safety supervisor homing to
-    /// PEDAL_UP with the motors on, control loop), reads the modules' parameters and starts the session thread.
+    /// PEDAL_UP with the motors on, control loop), queues the modules' parameter reads and starts the session thread
+    /// and the status thread.
     /// </summary>
     /// <exception cref="Runtime.Graph.GraphException">The graph file is invalid.</exception>
     /// <exception cref="InvalidOperationException">The graph names no robot, or the transport does not fit.</exception>
@@ -80,16 +65,14 @@ public sealed partial class LiveSession : IConsoleSession
         _session = RobotSession.Open(
             new SessionOptions { GraphPath = options.GraphPath, Virtual = options.Virtual, Seed = options.Seed, Transport = options.Transport, Observer = (_, _) => slot, Robot = new BusRobotOptions { DetailPollCycles = DetailPollCycles } },
             options.Catalog);
-        _robot = _session.Connection.Definition!;
-        _bus = _session.Robot;
-        _supervisor = _session.Supervisor;
-        _clock = _session.Clock;
-        _begin = _clock.GetTimestamp();
-        _commands = new CommandQueue(_bus.Slot);
-        _robotEvents = _bus.Events.Subscribe();
+        var robot = _session.Connection.Definition!;
+        var bus = _session.Robot;
+        _events = new SessionEvents(_session.Clock);
+        _queue = new CommandQueue(bus.Slot);
+        var robotEvents = bus.Events.Subscribe();
         try
         {
-            faults.Schedule(_session.Simulation, _robot);
+            faults.Schedule(_session.Simulation, robot);
         }
         catch (FormatException)
         {
@@ -98,31 +81,32 @@ public sealed partial class LiveSession : IConsoleSession
         }
         _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
         slot.Target = _recorder;
-        Transport = options.Virtual ? $"virtual:{Path.GetFileName(_robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;
-        Model = BuildModel();
-        LogDiscovery(_session.Discovery);
-        foreach (var c in _bus.Controllers.Where(c => c.Present))
-        {
-            _pendingReads.Enqueue(c); // read between the first cycles, one module at a time
-        }
-
-        LogSupervisor();
-        _statusView = BuildStatus();
-        PublishControllers();
+        Transport = options.Virtual ? $"virtual:{Path.GetFileName(robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;
+        Model = BuildModel(robot);
+        var modules = new SessionModules(_events);
+        var parameters = new ModuleParameters(bus, _queue, _events);
+        var runLevels = new RunLevelLog(_session.Supervisor, _events);
+        modules.Record(_session.Discovery);
+        parameters.QueuePresentModules(); // read between the first cycles, one module at a time
+        var checks = new CommandChecks(bus, _session.Supervisor);
+        _publisher = new StatusPublisher(_session, Transport, _events, runLevels, parameters, modules, _sessionThread, robotEvents);
+        _modules = new ModuleCommands(bus, _queue, _events, checks, modules, parameters);
+        _motors = new MotorCommands(_session, _queue, _events, checks);
+        _runLevel = new RunLevelCommands(_session.Supervisor, bus, _queue, _events, runLevels, _sessionThread);
+        _surgeon = new SurgeonStation(_session, _queue, _events);
         _thread = new Thread(Run) { Name = "console session (bus)", IsBackground = true, Priority = ThreadPriority.AboveNormal };
-        _publisher = new Thread(PublishUntilStopped) { Name = "console session (status)", IsBackground = true };
         _thread.Start();
-        _publisher.Start();
+        _publisher.Start(_stop.Token);
     }
 
     /// <summary>The transport in use.</summary>
     public string Transport { get; }
 
     /// <inheritdoc />
-    public SessionStatus Status => _statusView;
+    public SessionStatus Status => _publisher.Status;
 
     /// <inheritdoc />
-    public IReadOnlyList<ControllerView> Controllers => _controllersView;
+    public IReadOnlyList<ControllerView> Controllers => _publisher.Controllers;
 
     /// <inheritdoc />
     public SignalRing Signals => _recorder.Ring;
@@ -134,14 +118,62 @@ public sealed partial class LiveSession : IConsoleSession
     public IReadOnlyList<ComponentTiming> Timings =>
     [
         Timing($"control loop tick ({_session.Graph.Program.Order.Count} instances)", _session.Loop.Statistics),
-        Timing(_session.IsVirtual ? "bus cycle (write, read, publish, check, between cycles)" : "bus cycle (timed on the virtual robot only)", _busTiming),
+        Timing(_session.IsVirtual ? "bus cycle (write, read, publish, check, between cycles)" : "bus cycle (timed on the virtual robot only)", _sessionThread.BusCycle),
     ];
+
+    /// <inheritdoc />
+    public SurgeonView Surgeon => _surgeon.View;
+
+    /// <inheritdoc />
+    public WorkspaceView Workspace => _surgeon.Workspace;
 
     /// <summary>The loop (benchmarks read its statistics).</summary>
     internal ControlLoop Loop => _session.Loop;
 
     /// <inheritdoc />
     public IReadOnlyList<EventEntry> EventsAfter(long after) => _events.After(after);
+
+    /// <inheritdoc />
+    public Task<CommandResult> DiscoverAsync() => Answered(_modules.DiscoverAsync());
+
+    /// <inheritdoc />
+    public Task<CommandResult> RenameAsync(int controllerId, string name) => Answered(_modules.RenameAsync(controllerId, name));
+
+    /// <inheritdoc />
+    public Task<CommandResult> ReloadParametersAsync(int controllerId) => Answered(_modules.ReloadParametersAsync(controllerId));
+
+    /// <inheritdoc />
+    public Task<CommandResult> RebootAsync(int controllerId) => Answered(_modules.RebootAsync(controllerId));
+
+    /// <inheritdoc />
+    public Task<CommandResult> WriteParameterAsync(string motor, string parameter, double value) => Answered(_modules.WriteParameterAsync(motor, parameter, value));
+
+    /// <inheritdoc />
+    public Task<CommandResult> JogAsync(string motor, double degPerS) => Answered(_motors.JogAsync(motor, degPerS));
+
+    /// <inheritdoc />
+    public Task<CommandResult> SetpointAsync(string motor, double deg) => Answered(_motors.SetpointAsync(motor, deg));
+
+    /// <inheritdoc />
+    public Task<CommandResult> ReleaseAsync(string motor) => Answered(_motors.ReleaseAsync(motor));
+
+    /// <inheritdoc />
+    public Task<CommandResult> HomeAsync(string? motor) => Answered(_motors.HomeAsync(motor));
+
+    /// <inheritdoc />
+    public Task<CommandResult> TorqueAsync(bool on) => Answered(_runLevel.TorqueAsync(on));
+
+    /// <inheritdoc />
+    public Task<CommandResult> PedalAsync(bool down) => Answered(_runLevel.PedalAsync(down));
+
+    /// <inheritdoc />
+    public Task<CommandResult> EmergencyStopAsync() => Answered(_runLevel.EmergencyStopAsync());
+
+    /// <inheritdoc />
+    public Task<CommandResult> ClearFaultsAsync() => Answered(_runLevel.ClearFaultsAsync());
+
+    /// <inheritdoc />
+    public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Answered(_surgeon.SetScaleAsync(arm, ratio));
 
     /// <inheritdoc />
     public SessionEnd Close()
@@ -153,13 +185,13 @@ public sealed partial class LiveSession : IConsoleSession
                 return _end;
             }
 
-            _commands.Close();
+            _queue.Close();
             _stop.Cancel();
             _thread.Join();
             var stop = _session.Stop(); // loop and bus thread off, motors off through the robot's state machine (or written off directly), every module read back
             _publisher.Join();
-            var last = BuildStatus();
-            _events.Add(Now, "session", $"stopped: {stop.Summary}");
+            var last = _publisher.BuildStatus();
+            _events.Add("session", $"stopped: {stop.Summary}");
             _end = new SessionEnd(last with { Session = "stopped", TorqueOn = stop.TorqueOn.Count > 0 }, stop, _events.After(0), Timings);
             return _end;
         }
@@ -169,20 +201,54 @@ public sealed partial class LiveSession : IConsoleSession
     public void Dispose()
     {
         _ = Close();
-        _robotEvents.Dispose();
+        _publisher.Dispose();
         _session.Dispose();
         _stop.Dispose();
     }
 
+    /// <summary>The virtual robot's own output angle of <paramref name="motor"/> in degrees (tests: the simulation's truth), read on the session thread.</summary>
+    internal Task<double> VirtualOutputDeg(string motor) => _motors.VirtualOutputDeg(motor);
+
     private static ComponentTiming Timing(string name, TickStatistics s) => new(name, s.Count, s.MedianUs, s.P99Us, s.MaxUs);
 
-    private double Now => _clock.GetElapsedTime(_begin).TotalSeconds;
+    /// <summary>
+    /// A command's answer, given once the snapshots (status, bus page) have been published again after it ran, so that
+    /// what it did shows in <see cref="Status"/> and <see cref="Controllers"/> when the caller has the answer. The
+    /// publication runs on the thread pool, never on the bus's owner; once the session is stopping, the status thread's
+    /// last turn and the stop's report are the last snapshots.
+    /// </summary>
+    private Task<CommandResult> Answered(Task<CommandResult> command) => command.ContinueWith(
+        t =>
+        {
+            if (!_stop.IsCancellationRequested)
+            {
+                _publisher.Publish();
+            }
 
+            return t.GetAwaiter().GetResult();
+        },
+        CancellationToken.None,
+        TaskContinuationOptions.None,
+        TaskScheduler.Default);
+
+    /// <summary>The 3D view's model: the host's URDF of the robot (both arms) and each arm's joints and signals.</summary>
+    private static RobotModelView BuildModel(Hardware.Model.RobotDefinition robot)
+    {
+        var urdf = UrdfExport.ToDocument(robot).ToString();
+        var arms = robot.Arms.Select(a => new ArmView(
+            a.Name,
+            [.. robot.Joints.Select(j => UrdfExport.JointName(a.Name, j.Name))],
+            [.. robot.Joints.Select(j => RingRecorder.PositionSignal(a.Name, j.Name))],
+            [.. robot.Joints.Select(j => RingRecorder.CommandSignal(a.Name, j.Name))])).ToList();
+        return new RobotModelView(urdf, arms);
+    }
+
+    /// <summary>The session thread: runs the bus cycles (virtual robot) or watches the loop (real bus) until the stop.</summary>
     private void Run()
     {
         try
         {
-            _state = "running";
+            _sessionThread.Phase = "running";
             if (_session.IsVirtual)
             {
                 RunVirtual();
@@ -196,13 +262,13 @@ public sealed partial class LiveSession : IConsoleSession
         catch (Exception ex)
 #pragma warning restore CA1031
         {
-            _state = "failed";
-            _events.Add(Now, "session", $"the session thread stopped: {ex.Message}");
-            _statusView = BuildStatus();
+            _sessionThread.Phase = "failed";
+            _events.Add("session", $"the session thread stopped: {ex.Message}");
+            _publisher.PublishStatus();
             return;
         }
 
-        _state = "stopped";
+        _sessionThread.Phase = "stopped";
     }
 
     private void RunVirtual()
@@ -214,8 +280,8 @@ public sealed partial class LiveSession : IConsoleSession
         var cycleBegin = Stopwatch.GetTimestamp();
         _session.RunVirtual(long.MaxValue, () =>
         {
-            _busTiming.Record(Stopwatch.GetTimestamp() - cycleBegin);
-            var ahead = Now - wall.Elapsed.TotalSeconds;
+            _sessionThread.BusCycle.Record(Stopwatch.GetTimestamp() - cycleBegin);
+            var ahead = _events.Now - wall.Elapsed.TotalSeconds;
             if (ahead > 0.002)
             {
                 Thread.Sleep(TimeSpan.FromSeconds(ahead));
@@ -230,7 +296,7 @@ public sealed partial class LiveSession : IConsoleSession
     {
         var before = GC.GetAllocatedBytesForCurrentThread();
         loop.Step();
-        Interlocked.Add(ref _tickAllocatedBytes, GC.GetAllocatedBytesForCurrentThread() - before);
+        _sessionThread.AddTickAllocation(GC.GetAllocatedBytesForCurrentThread() - before);
     }
 
     /// <summary>
@@ -240,9 +306,9 @@ public sealed partial class LiveSession : IConsoleSession
     private void RunRealTime()
     {
         _session.StartBus(_threads); // code compiled, wake-up latency held until the session's stop, as in a run
-        _events.Add(Now, "session", $"threads: {_threads.Outcome}{(_session.CpuLatency is { } latency ? "; " + latency : "")}");
+        _events.Add("session", $"threads: {_threads.Outcome}{(_session.CpuLatency is { } latency ? "; " + latency : "")}");
         var loop = _session.Loop;
-        while (!_stop.Token.WaitHandle.WaitOne(PublishEvery) && loop.ThreadFailure is null)
+        while (!_stop.Token.WaitHandle.WaitOne(StatusPublisher.Every) && loop.ThreadFailure is null)
         {
         }
 
@@ -250,164 +316,6 @@ public sealed partial class LiveSession : IConsoleSession
         {
             throw new InvalidOperationException($"control loop failed: {failure.Message}", failure);
         }
-    }
-
-    /// <summary>The status thread: events, run levels, parameter reads and snapshots every <see cref="PublishEvery"/> until the stop.</summary>
-    private void PublishUntilStopped()
-    {
-        do
-        {
-            PublishOnce();
-        }
-        while (!_stop.Token.WaitHandle.WaitOne(PublishEvery));
-
-        PublishOnce();
-    }
-
-    private void PublishOnce()
-    {
-        while (_robotEvents.TryRead(out var e))
-        {
-            _events.Add(Now, "robot", e.Message);
-        }
-
-        LogSupervisor();
-        ReadPendingParameters();
-        _statusView = BuildStatus();
-        PublishControllers();
-    }
-
-    /// <summary>Logs what discovery found and returns it as lines.</summary>
-    private List<string> LogDiscovery(DiscoveryReport report)
-    {
-        _found = report.Present.Count;
-        var lines = report.Lines().Select(l => l.Trim()).ToList();
-        foreach (var line in lines)
-        {
-            _events.Add(Now, "discovery", line);
-        }
-
-        return lines;
-    }
-
-    /// <summary>Copies the supervisor's new run-level changes and trips into the event log.</summary>
-    private void LogSupervisor()
-    {
-        lock (_logGate)
-        {
-            LogSupervisorLocked();
-        }
-    }
-
-    private void LogSupervisorLocked()
-    {
-        var history = _supervisor.History;
-        for (; _levelsLogged < history.Count; _levelsLogged++)
-        {
-            var h = history[_levelsLogged];
-            _events.Add(Now, "safety", $"{h.From.Name()} -> {h.To.Name()} ({h.Source}): {h.Reason}");
-        }
-
-        var trips = _supervisor.Trips;
-        for (; _tripsLogged < trips.Count; _tripsLogged++)
-        {
-            _events.Add(Now, "safety", $"trip: {trips[_tripsLogged]}");
-        }
-    }
-
-    private SessionStatus BuildStatus()
-    {
-        var totals = _bus.Client.Totals(_bus.Controllers.Select(c => c.Id));
-        var stats = _session.Loop.Statistics;
-        var faults = _bus.Faults;
-        var state = _state == "running" && _session.Node.Holding ? "holding (a plug-in faulted)" : _state;
-        var faultNames = Enum.GetValues<RobotFaults>().Where(f => f != RobotFaults.None && faults.HasFlag(f)).Select(f => f.ToString())
-            .Concat(_supervisor.Level == RunLevel.EStop ? _supervisor.Trips.Select(t => $"trip: {t}") : []);
-        return new SessionStatus(
-            _robot.Name,
-            Path.GetFileName(_session.Graph.Path),
-            Transport,
-            _bus.Controllers.Count,
-            _found,
-            _session.Graph.Document.LoopRateHz,
-            _session.Loop.TickCount,
-            stats.DeadlineMisses,
-            stats.MedianUs,
-            stats.P99Us,
-            stats.MaxUs,
-            _session.IsVirtual ? Interlocked.Read(ref _tickAllocatedBytes) : null,
-            Now,
-            _supervisor.Level.Name(),
-            _bus.State.ToString(),
-            state,
-            TorqueOn,
-            [.. faultNames],
-            _session.Graph.Program.FaultCount,
-            new BusCounters(_bus.Cycles, totals.Frames, totals.CrcErrors, totals.Timeouts, totals.Retries));
-    }
-
-    /// <summary>The bus page's modules and motors, as the robot core last found them.</summary>
-    private void PublishControllers()
-    {
-        var list = new List<ControllerView>();
-        foreach (var c in _bus.Controllers)
-        {
-            var status = (HardwareErrors)c.HardwareErrorStatus;
-            var motors = c.Motors.Select(m => new MotorView(
-                m.Config.FullName,
-                m.Config.Name,
-                m.Config.Channel,
-                m.PositionRad * 180 / Math.PI,
-                m.Config.OutputMinRad * 180 / Math.PI,
-                m.Config.OutputMaxRad * 180 / Math.PI,
-                m.CurrentA,
-                m.Pwm,
-                m.IsManual,
-                m.TorqueReadBack ?? false,
-                m.Errors is { } errors ? Names(errors) : [],
-                [.. MotorParameter.All.Select(p =>
-                {
-                    var (min, max) = p.Range(m.Config);
-                    var value = _parameters.TryGetValue((c.Id, m.Config.Channel, p.Key), out var v) ? v : double.NaN;
-                    return new ParameterSpec(p.Key, p.Label, p.Unit, value, p.FileValue(m.Config), min, max);
-                })])).ToList();
-            list.Add(new ControllerView(
-                c.Id,
-                _names.TryGetValue(c.Id, out var name) ? name : c.Name,
-                c.Present,
-                c.ModelNumber,
-                c.FirmwareVersion,
-                ResetCause(c.LastResetCause),
-                c.Resets,
-                c.BusWatchdogMs switch { < 0 => "not read yet", 0 => "off", var ms => $"{ms} ms" } + (status.HasAny(HardwareErrors.BusWatchdog) ? ", TRIPPED" : string.Empty),
-                Names(status),
-                motors));
-        }
-
-        _controllersView = list;
-    }
-
-    /// <summary>Names of the set bits of <paramref name="bits"/>, as the control table names them.</summary>
-    private static string[] Names(HardwareErrors bits) => bits.IsNone ? [] : bits.ToString().Split(", ");
-
-    /// <summary>A reset cause in words, as the control table names it.</summary>
-    private static string ResetCause(int cause) =>
-        cause == 0 ? "none since connected"
-        : Bus.Protocol.ControlTable.Firmware.Codes("reset_cause").TryGetValue(cause, out var name) ? name : $"cause {cause}";
-
-    /// <summary>True while the motors are driven (the robot layer is enabled).</summary>
-    private bool TorqueOn => _bus.State == Robot.States.RobotState.Enabled;
-
-    /// <summary>The 3D view's model: the host's URDF of the robot (both arms) and each arm's joints and signals.</summary>
-    private RobotModelView BuildModel()
-    {
-        var urdf = UrdfExport.ToDocument(_robot).ToString();
-        var arms = _robot.Arms.Select(a => new ArmView(
-            a.Name,
-            [.. _robot.Joints.Select(j => UrdfExport.JointName(a.Name, j.Name))],
-            [.. _robot.Joints.Select(j => RingRecorder.PositionSignal(a.Name, j.Name))],
-            [.. _robot.Joints.Select(j => RingRecorder.CommandSignal(a.Name, j.Name))])).ToList();
-        return new RobotModelView(urdf, arms);
     }
 
     /// <summary>The loop's observer, given to the session layer before the recorder (which needs the loaded graph) exists.</summary>

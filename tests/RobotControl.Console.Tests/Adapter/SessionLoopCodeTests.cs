@@ -22,4 +22,16 @@ public sealed class SessionLoopCodeTests
         Assert.True(own.Count == 0, $"the console keeps bus parts of its own: {string.Join(", ", own)}");
         Assert.Null(typeof(LiveSession).GetMethod("RunRealTime", BindingFlags.Instance | BindingFlags.NonPublic)?.GetCustomAttribute<System.Runtime.CompilerServices.MethodImplAttribute>());
     }
+
+    [Fact]
+    public void No_part_of_the_live_session_holds_a_bus_client_transport_or_simulator_of_its_own()
+    {
+        var parts = typeof(LiveSession).Assembly.GetTypes().Where(t => t.Namespace == typeof(LiveSession).Namespace && !t.IsDefined(typeof(System.Runtime.CompilerServices.CompilerGeneratedAttribute), false)).ToList();
+        var own = parts.SelectMany(t => t.GetFields(BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public).Select(f => (Type: t, Field: f)))
+            .Where(x => typeof(BusClient).IsAssignableFrom(x.Field.FieldType) || typeof(IByteLink).IsAssignableFrom(x.Field.FieldType) || typeof(VirtualRobot).IsAssignableFrom(x.Field.FieldType))
+            .Select(x => $"{x.Type.Name}.{x.Field.Name}").ToList();
+
+        Assert.Contains(typeof(StatusPublisher), parts);
+        Assert.True(own.Count == 0, $"the console keeps bus parts of its own: {string.Join(", ", own)}");
+    }
 }
