@@ -212,17 +212,18 @@ public sealed class LiveSession : IConsoleSession
     private static ComponentTiming Timing(string name, TickStatistics s) => new(name, s.Count, s.MedianUs, s.P99Us, s.MaxUs);
 
     /// <summary>
-    /// A command's answer, given once the snapshots (status, bus page) have been published again after it ran, so that
-    /// what it did shows in <see cref="Status"/> and <see cref="Controllers"/> when the caller has the answer. The
-    /// publication runs on the thread pool, never on the bus's owner; once the session is stopping, the status thread's
-    /// last turn and the stop's report are the last snapshots.
+    /// A command's answer, given once the run levels are in the event log and the snapshots (status, bus page) have been
+    /// published again after it ran, so that what it did shows in <see cref="EventsAfter"/>, <see cref="Status"/> and
+    /// <see cref="Controllers"/> when the caller has the answer. The publication runs on the thread pool, never on the
+    /// bus's owner; once the session is stopping, the status thread's last turn and the stop's report are the last
+    /// snapshots.
     /// </summary>
     private Task<CommandResult> Answered(Task<CommandResult> command) => command.ContinueWith(
         t =>
         {
             if (!_stop.IsCancellationRequested)
             {
-                _publisher.Publish();
+                _publisher.PublishAfterCommand();
             }
 
             return t.GetAwaiter().GetResult();

@@ -15,7 +15,7 @@ namespace RobotControl.WebConsole.Adapter;
 /// motors, as the robot core last found them.
 /// <para>
 /// Written by the status thread (the snapshots, the event subscription), by the constructor (the first snapshots), by
-/// a command's completion (<see cref="Publish"/>, so that what it did is in the snapshots when its answer arrives)
+/// a command's completion (<see cref="PublishAfterCommand"/>, so that what it did is in the snapshots when its answer arrives)
 /// and by the session thread when it fails; any thread reads the snapshots. They are built and stored under a lock,
 /// so the last ones stored are the last ones built.
 /// </para>
@@ -79,14 +79,14 @@ internal sealed class StatusPublisher : IDisposable
     /// <summary>Waits for the status thread's last turn.</summary>
     public void Join() => _thread.Join();
 
-    /// <summary>Publishes the run status and the bus page's modules and motors now (the status thread's turn, a command's completion).</summary>
-    public void Publish()
+    /// <summary>
+    /// After a command: copies the run levels into the event log and publishes the run status and the bus page's
+    /// modules and motors now (the robot's events stay with the status thread, their one reader).
+    /// </summary>
+    public void PublishAfterCommand()
     {
-        lock (_publishGate)
-        {
-            _status = BuildStatus();
-            _controllers = BuildControllers();
-        }
+        _runLevels.CatchUp();
+        PublishSnapshots();
     }
 
     /// <summary>Publishes the run status now (the session thread, when it fails).</summary>
@@ -162,7 +162,16 @@ internal sealed class StatusPublisher : IDisposable
 
         _runLevels.CatchUp();
         _parameters.ReadNextWaiting();
-        Publish();
+        PublishSnapshots();
+    }
+
+    private void PublishSnapshots()
+    {
+        lock (_publishGate)
+        {
+            _status = BuildStatus();
+            _controllers = BuildControllers();
+        }
     }
 
     /// <summary>The bus page's modules and motors, as the robot core last found them.</summary>
