@@ -27,7 +27,7 @@ public sealed class ConsoleFixture : IAsyncLifetime
 
     private HeadlessChromium? _chromium;
 
-    public HeadlessSession Session { get; private set; } = null!;
+    public LiveSession Session { get; private set; } = null!;
 
     public ConsoleServer Server { get; private set; } = null!;
 
@@ -50,7 +50,7 @@ public sealed class ConsoleFixture : IAsyncLifetime
     public static PluginCatalog Catalog() => PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
 
     /// <summary>A console session on the virtual LB-1.0 running <c>graphs/teleop-lb.json</c>, with <paramref name="inject"/>'s faults.</summary>
-    public static HeadlessSession VirtualSession(FaultInjection? inject = null) => new(new HeadlessSessionOptions
+    public static LiveSession VirtualSession(FaultInjection? inject = null) => new(new LiveSessionOptions
     {
         GraphPath = Path.Combine(RepoRoot, "graphs", "teleop-lb.json"),
         Catalog = Catalog(),

@@ -19,13 +19,13 @@ internal sealed class EStopRun : IAsyncDisposable
     private const string EStopPath = "/api/estop";
     private static readonly TimeSpan FrameWait = TimeSpan.FromSeconds(10);
     private static readonly TimeSpan ReadyWait = TimeSpan.FromSeconds(60);
-    private readonly HeadlessSession _session;
+    private readonly LiveSession _session;
     private readonly EStopTapLink _tap;
     private readonly ConsoleServer _server;
     private readonly HttpClient _watcher;
     private readonly HttpClient _operator;
 
-    private EStopRun(HeadlessSession session, EStopTapLink tap, ConsoleServer server)
+    private EStopRun(LiveSession session, EStopTapLink tap, ConsoleServer server)
     {
         _session = session;
         _tap = tap;
@@ -41,7 +41,7 @@ internal sealed class EStopRun : IAsyncDisposable
     public static async Task<EStopRun> Start(string graph, StopFrame wanted)
     {
         EStopTapLink? tap = null;
-        var session = new HeadlessSession(new HeadlessSessionOptions
+        var session = new LiveSession(new LiveSessionOptions
         {
             GraphPath = graph,
             Catalog = ShippedPlugins.Catalog(),

@@ -75,7 +75,7 @@ internal static class BrowserMeasures
         """;
 
     /// <summary>Measures against <paramref name="session"/> (disposed here) with the browser at <paramref name="chromium"/>.</summary>
-    public static async Task<BrowserResult> Measure(HeadlessSession session, string chromium)
+    public static async Task<BrowserResult> Measure(LiveSession session, string chromium)
     {
         using (session)
         {

@@ -78,8 +78,8 @@ internal sealed class ConsoleBench : IBenchCommand
         return sorted.Length == 0 ? double.NaN : sorted.Length % 2 == 1 ? sorted[sorted.Length / 2] : (sorted[(sorted.Length / 2) - 1] + sorted[sorted.Length / 2]) / 2;
     }
 
-    private static HeadlessSession Open(string graph, PluginCatalog catalog) =>
-        new(new HeadlessSessionOptions { GraphPath = graph, Catalog = catalog, Virtual = true });
+    private static LiveSession Open(string graph, PluginCatalog catalog) =>
+        new(new LiveSessionOptions { GraphPath = graph, Catalog = catalog, Virtual = true });
 
     private static string? Arg(string[] args, string name)
     {

@@ -14,7 +14,7 @@ internal static class StreamingClients
     private static readonly TimeSpan WarmUp = TimeSpan.FromSeconds(1);
 
     /// <summary>Runs <paramref name="session"/> (disposed here) for <paramref name="seconds"/> with <paramref name="clients"/> clients.</summary>
-    public static async Task<StreamRun> Measure(HeadlessSession session, double seconds, int clients)
+    public static async Task<StreamRun> Measure(LiveSession session, double seconds, int clients)
     {
         using (session)
         {

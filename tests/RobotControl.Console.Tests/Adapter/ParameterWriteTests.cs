@@ -45,7 +45,7 @@ public sealed class ParameterWriteTests
     }
 
     /// <summary>right.elbow's parameter as its module (2) holds it: read again, and published (a second command runs after the first one's publication).</summary>
-    private static async Task<double> Held(HeadlessSession session, string key)
+    private static async Task<double> Held(LiveSession session, string key)
     {
         Assert.True((await session.ReloadParametersAsync(2)).Succeeded);
         Assert.True((await session.ReloadParametersAsync(2)).Succeeded);

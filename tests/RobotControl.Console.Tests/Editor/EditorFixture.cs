@@ -38,10 +38,10 @@ public sealed class EditorFixture : IAsyncLifetime
         File.Copy(Path.Combine(repo, "graphs", "teleop-lb.json"), Path.Combine(Graphs, "teleop-lb.json"));
         File.Copy(Path.Combine(repo, "tests", "RobotControl.Console.Tests", "Editor", HandWritten), Path.Combine(Graphs, HandWritten));
 
-        var options = new HeadlessSessionOptions { GraphPath = Path.Combine(Graphs, "teleop-lb.json"), Catalog = ConsoleFixture.Catalog(), Virtual = true };
-        var first = new HeadlessSession(options);
+        var options = new LiveSessionOptions { GraphPath = Path.Combine(Graphs, "teleop-lb.json"), Catalog = ConsoleFixture.Catalog(), Virtual = true };
+        var first = new LiveSession(options);
         Session = new SwitchableSession(first);
-        Runner = new GraphRunner(Session, options.GraphPath, first.Transport, path => new HeadlessSession(options with { GraphPath = path }));
+        Runner = new GraphRunner(Session, options.GraphPath, first.Transport, path => new LiveSession(options with { GraphPath = path }));
         var editor = new GraphEditor(new GraphFolder(Graphs), options.Catalog, Runner);
         Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null, editor: editor);
         _chromium = await HeadlessChromium.LaunchAsync();

@@ -53,7 +53,7 @@ public sealed class EmergencyStopTests
     }
 
     /// <summary>Waits for the status snapshot (published ten times a second) to show <paramref name="level"/>.</summary>
-    private static async Task StatusShows(HeadlessSession session, string level)
+    private static async Task StatusShows(LiveSession session, string level)
     {
         var waited = System.Diagnostics.Stopwatch.StartNew();
         while (session.Status.RobotState != level)
@@ -63,7 +63,7 @@ public sealed class EmergencyStopTests
         }
     }
 
-    private static HeadlessSession Open() => new(new HeadlessSessionOptions
+    private static LiveSession Open() => new(new LiveSessionOptions
     {
         GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"),
         Catalog = ConsoleFixture.Catalog(),

@@ -21,7 +21,7 @@ public sealed class SurgeonFixture : IAsyncLifetime
     private readonly string _folder = Path.Combine(Path.GetTempPath(), $"rc-surgeon-{Guid.NewGuid():N}");
     private HeadlessChromium? _chromium;
 
-    public HeadlessSession Session { get; private set; } = null!;
+    public LiveSession Session { get; private set; } = null!;
 
     public ConsoleServer Server { get; private set; } = null!;
 
@@ -33,7 +33,7 @@ public sealed class SurgeonFixture : IAsyncLifetime
     {
         Directory.CreateDirectory(_folder);
         WriteRobotAndGraph(_folder);
-        Session = new HeadlessSession(new HeadlessSessionOptions { GraphPath = GraphPath, Catalog = ConsoleFixture.Catalog(), Virtual = true });
+        Session = new LiveSession(new LiveSessionOptions { GraphPath = GraphPath, Catalog = ConsoleFixture.Catalog(), Virtual = true });
         Server = await ConsoleServer.StartAsync(Session, BindAddress.Parse("127.0.0.1:0"), null);
         _chromium = await HeadlessChromium.LaunchAsync();
     }

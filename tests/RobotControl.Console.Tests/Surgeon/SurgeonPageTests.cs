@@ -124,7 +124,7 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
         try
         {
             SurgeonFixture.WriteRobotAndGraph(folder);
-            using var session = new HeadlessSession(new HeadlessSessionOptions
+            using var session = new LiveSession(new LiveSessionOptions
             {
                 GraphPath = Path.Combine(folder, "surgeon.json"),
                 Catalog = ConsoleFixture.Catalog(),

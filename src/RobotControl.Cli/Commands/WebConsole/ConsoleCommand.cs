@@ -80,8 +80,8 @@ internal sealed class ConsoleCommand : ICliCommand
             return 2;
         }
 
-        HeadlessSession session;
-        HeadlessSessionOptions options;
+        LiveSession session;
+        LiveSessionOptions options;
         try
         {
             if (transport is not null)
@@ -90,8 +90,8 @@ internal sealed class ConsoleCommand : ICliCommand
             }
 
             extras.CheckPage();
-            options = new HeadlessSessionOptions { GraphPath = graphPath, Catalog = ShippedPlugins.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed, Threads = extras.Scheduling.Threads() };
-            session = new HeadlessSession(options with { Inject = FaultInjection.Parse(extras.Inject) }); // faults for the first session only, not for graphs started from the editor
+            options = new LiveSessionOptions { GraphPath = graphPath, Catalog = ShippedPlugins.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed, Threads = extras.Scheduling.Threads() };
+            session = new LiveSession(options with { Inject = FaultInjection.Parse(extras.Inject) }); // faults for the first session only, not for graphs started from the editor
         }
         catch (GraphException ex)
         {
@@ -106,7 +106,7 @@ internal sealed class ConsoleCommand : ICliCommand
 
         // The graph editor runs the graphs of the folder the given graph is in, on the same robot options.
         var switchable = new SwitchableSession(session);
-        using var runner = new GraphRunner(switchable, graphPath, session.Transport, path => new HeadlessSession(options with { GraphPath = path }));
+        using var runner = new GraphRunner(switchable, graphPath, session.Transport, path => new LiveSession(options with { GraphPath = path }));
         var editor = new GraphEditor(new GraphFolder(Path.GetDirectoryName(graphPath)!), options.Catalog, runner);
         SessionEnd end;
         using (switchable)

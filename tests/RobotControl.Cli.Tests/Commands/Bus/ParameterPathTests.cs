@@ -34,7 +34,7 @@ public sealed class ParameterPathTests
         Assert.StartsWith($"{field} = {counts} is outside its range 0..", rule, StringComparison.Ordinal);
         Assert.EndsWith("; nothing was written", rule, StringComparison.Ordinal);
 
-        using var session = new HeadlessSession(new HeadlessSessionOptions
+        using var session = new LiveSession(new LiveSessionOptions
         {
             GraphPath = Cli.RepoFile("graphs/teleop-lb.json"),
             Catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly),

@@ -5,7 +5,7 @@ using RobotControl.Runtime.Discovery;
 namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>How the console brings its session up.</summary>
-public sealed record HeadlessSessionOptions
+public sealed record LiveSessionOptions
 {
     /// <summary>The graph file.</summary>
     public required string GraphPath { get; init; }
