@@ -45,6 +45,7 @@ public sealed class LiveSession : IConsoleSession
     private readonly Lock _closeLock = new();
     private readonly Host.Realtime.RealtimeThreads _threads;
     private readonly Thread _thread;
+    private readonly ManualResetEventSlim _ownsBus = new();
     private SessionEnd? _end;
 
     /// <summary>
@@ -96,6 +97,7 @@ public sealed class LiveSession : IConsoleSession
         _surgeon = new SurgeonStation(_session, _queue, _events);
         _thread = new Thread(Run) { Name = "console session (bus)", IsBackground = true, Priority = ThreadPriority.AboveNormal };
         _thread.Start();
+        _ownsBus.Wait(); // from here on a command runs between cycles on the bus's owner, never on the caller's thread
         _publisher.Start(_stop.Token);
     }
 
@@ -204,6 +206,7 @@ public sealed class LiveSession : IConsoleSession
         _publisher.Dispose();
         _session.Dispose();
         _stop.Dispose();
+        _ownsBus.Dispose();
     }
 
     /// <summary>The virtual robot's own output angle of <paramref name="motor"/> in degrees (tests: the simulation's truth), read on the session thread.</summary>
@@ -252,6 +255,8 @@ public sealed class LiveSession : IConsoleSession
             _sessionThread.Phase = "running";
             if (_session.IsVirtual)
             {
+                using var owns = _session.Robot.OwnBus(); // the schedule's thread owns the bus before the constructor returns
+                _ownsBus.Set();
                 RunVirtual();
             }
             else
@@ -268,6 +273,10 @@ public sealed class LiveSession : IConsoleSession
             _publisher.PublishStatus();
             return;
         }
+        finally
+        {
+            _ownsBus.Set(); // a session that failed before it ran no longer holds its constructor
+        }
 
         _sessionThread.Phase = "stopped";
     }
@@ -276,16 +285,18 @@ public sealed class LiveSession : IConsoleSession
     {
         // The session layer's schedule runs the robot's cycle and the loop ticks due on the virtual clock, and the
         // work between cycles (the console's commands); the thread sleeps whenever the virtual clock gets ahead of the
-        // wall clock, so the virtual robot runs in real time.
+        // wall clock, so the virtual robot runs in real time. It sleeps a millisecond at a time and stops sleeping
+        // when an emergency stop is on its way: a piece of work that ran ahead of the wall clock (homing, a parameter
+        // reload) must not hold the stop back while its virtual time is slept off.
         var wall = Stopwatch.StartNew();
         var cycleBegin = Stopwatch.GetTimestamp();
+        var robot = _session.Robot;
         _session.RunVirtual(long.MaxValue, () =>
         {
             _sessionThread.BusCycle.Record(Stopwatch.GetTimestamp() - cycleBegin);
-            var ahead = _events.Now - wall.Elapsed.TotalSeconds;
-            if (ahead > 0.002)
+            while (_events.Now - wall.Elapsed.TotalSeconds > 0.002 && !robot.StopPending && !_stop.IsCancellationRequested)
             {
-                Thread.Sleep(TimeSpan.FromSeconds(ahead));
+                Thread.Sleep(1);
             }
 
             cycleBegin = Stopwatch.GetTimestamp();
@@ -307,6 +318,7 @@ public sealed class LiveSession : IConsoleSession
     private void RunRealTime()
     {
         _session.StartBus(_threads); // code compiled, wake-up latency held until the session's stop, as in a run
+        _ownsBus.Set(); // the robot's bus thread owns the bus
         _events.Add("session", $"threads: {_threads.Outcome}{(_session.CpuLatency is { } latency ? "; " + latency : "")}");
         var loop = _session.Loop;
         while (!_stop.Token.WaitHandle.WaitOne(StatusPublisher.Every) && loop.ThreadFailure is null)
