@@ -29,10 +29,10 @@ public sealed partial class SafetySupervisor
             Trip(SafetyCheck.DeadlineMiss, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
         }
 
-        CheckModules(now);
+        _moduleChecks.CheckSilence(now);
         if (_robot.State == RobotState.Enabled && Level is RunLevel.PedalUp or RunLevel.PedalDown)
         {
-            CheckWatchdogs(now);
+            _moduleChecks.CheckWatchdogs(now);
         }
         if (_robot.State == RobotState.Fault)
         {
@@ -49,12 +49,7 @@ public sealed partial class SafetySupervisor
             MasterTimeout(stale.Arm, stale.AgeMs, now);
         }
 
-        var driven = _robot.State == RobotState.Enabled;
-        var homed = Level is RunLevel.PedalUp or RunLevel.PedalDown;
-        for (var i = 0; i < _motors.Length; i++)
-        {
-            CheckMotor(i, driven, homed, now);
-        }
+        _motorChecks.Check(driven: _robot.State == RobotState.Enabled, homed: Level is RunLevel.PedalUp or RunLevel.PedalDown, now);
     }
 
     /// <summary>The first arm whose input device data is older than the master timeout, with its age (ms), or null.</summary>
@@ -97,76 +92,4 @@ public sealed partial class SafetySupervisor
         PedalUpOnBus(TripSource, string.Create(CultureInfo.InvariantCulture, $"master_timeout {joint}: input data {age:0.#} ms old (limit {Limits.MasterTimeoutMs:0.#}): hold"));
     }
 
-    private void CheckModules(long now)
-    {
-        for (var i = 0; i < _controllers.Length; i++)
-        {
-            var c = _controllers[i];
-            if (c.MissedReplies == 0 || _answeredAt[i] == 0)
-            {
-                _answeredAt[i] = now;
-            }
-            else if (now - _answeredAt[i] > _silentTicks)
-            {
-                Trip(SafetyCheck.ModuleSilent, _controllerNames[i], Ms(now - _answeredAt[i]), Limits.ModuleSilentMs, "ms", now);
-            }
-        }
-    }
-
-    /// <summary>
-    /// While the motors are on, every module's bus watchdog must be armed with the robot file's period, as the status
-    /// poll reads it back: a module without one would drive on after the host stops.
-    /// </summary>
-    private void CheckWatchdogs(long now)
-    {
-        for (var i = 0; i < _controllers.Length; i++)
-        {
-            var read = _controllers[i].BusWatchdogMs;
-            if (read >= 0 && read != _watchdogMs)
-            {
-                Trip(SafetyCheck.WatchdogUnarmed, _controllerNames[i], read, _watchdogMs, "ms", now);
-            }
-        }
-    }
-
-    private void CheckMotor(int i, bool driven, bool homed, long now)
-    {
-        var m = _motors[i];
-        var position = m.PositionRad;
-        var current = m.CurrentA;
-        if (!double.IsFinite(position) || !double.IsFinite(current))
-        {
-            Trip(SafetyCheck.NonFinite, _motorNames[i], double.IsFinite(position) ? current : position, 0, double.IsFinite(position) ? "A" : "rad", now);
-            return;
-        }
-
-        var error = Math.Abs(_robot.SentGoalRad(m) - position);
-        Persist(ref _trackingSince[i], driven && error > _trackingLimit[i], now, _trackingTicks, SafetyCheck.TrackingError, i, error, _trackingLimit[i], "rad");
-        var limit = Limits.CurrentLimitFraction * m.CurrentLimitA;
-        Persist(ref _currentSince[i], Math.Abs(current) > limit, now, _currentTicks, SafetyCheck.OverCurrent, i, Math.Abs(current), limit, "A");
-
-        // Pot against encoder once the positions are trusted (after homing); the pot is read at the pot poll's rate.
-        var pot = m.PotPositionRad;
-        var distance = Math.Abs(pot - position);
-        Persist(ref _potSince[i], homed && double.IsFinite(pot) && distance > _potLimit[i], now, _potTicks, SafetyCheck.PotMismatch, i, distance, _potLimit[i], "rad");
-    }
-
-    private void Persist(ref long since, bool beyond, long now, long allowed, SafetyCheck check, int motor, double measured, double limit, string unit)
-    {
-        if (!beyond)
-        {
-            since = 0;
-            return;
-        }
-
-        if (since == 0)
-        {
-            since = now;
-        }
-
-        if (now - since >= allowed)
-        {
-            Trip(check, _motorNames[motor], measured, limit, unit, now);
-        }
-    }
 }

@@ -40,7 +40,7 @@ public sealed partial class SafetySupervisor
             _robot.EnableTorque(false);
         }
 
-        var lost = _mustRehome ? _motors.Length : PositionsInDoubt();
+        var lost = _mustRehome ? _motorChecks.Count : PositionsInDoubt();
         if (lost == 0)
         {
             _robot.HoldAtMeasured();
@@ -63,7 +63,7 @@ public sealed partial class SafetySupervisor
         _robot.HoldAtMeasured();
         _robot.EnableTorque(true);
         _torqueOffTaken = false;
-        _levels.MoveTo(RunLevel.PedalUp, source, $"{results.Count} motors homed and verified ({(lost == _motors.Length ? "after a reset" : $"{lost} had lost their position")}); motors on, holding");
+        _levels.MoveTo(RunLevel.PedalUp, source, $"{results.Count} motors homed and verified ({(lost == _motorChecks.Count ? "after a reset" : $"{lost} had lost their position")}); motors on, holding");
         return results;
     }
 
@@ -188,9 +188,7 @@ public sealed partial class SafetySupervisor
             Array.Clear(_tripped);
         }
 
-        Array.Clear(_trackingSince);
-        Array.Clear(_currentSince);
-        Array.Clear(_potSince);
+        _motorChecks.Clear();
         _levels.MoveTo(RunLevel.Init, source, "operator reset: motors off, faults cleared; homing needed before motion");
     }
 

@@ -40,26 +40,14 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private readonly StateMachine<RunLevel> _levels;
     private readonly List<SafetyTrip> _trips = new(32);
     private readonly Lock _tripGate = new();
-    private readonly RobotMotor[] _motors;
     private readonly RobotController[] _controllers;
-    private readonly string[] _motorNames;
-    private readonly string[] _controllerNames;
-    private readonly long[] _trackingSince;
-    private readonly long[] _currentSince;
-    private readonly long[] _potSince;
-    private readonly double[] _trackingLimit;
-    private readonly double[] _potLimit;
-    private readonly long[] _answeredAt;
+    private readonly MotorChecks _motorChecks;
+    private readonly ModuleChecks _moduleChecks;
     private readonly OperatorInputs _inputs;
     private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
     private readonly SafeState[] _safeStates; // per check, looked up once: a trip's path does no dictionary lookup
-    private readonly long _trackingTicks;
-    private readonly long _currentTicks;
-    private readonly long _potTicks;
-    private readonly long _silentTicks;
     private readonly long _stallTicks;
     private readonly int _arms;
-    private readonly int _watchdogMs;
     private long _lastCycle;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
@@ -81,25 +69,14 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         Limits = limits;
         LoopPeriod = loopPeriod;
         _levels = RunLevels.NewMachine(_time);
-        _motors = [.. robot.Motors];
         _controllers = [.. robot.Controllers];
-        _motorNames = [.. _motors.Select(m => m.Config.FullName)];
-        _controllerNames = [.. _controllers.Select(c => $"{ArmName(robot, c)}.{c.Definition.Location}")];
-        _trackingSince = new long[_motors.Length];
-        _currentSince = new long[_motors.Length];
-        _potSince = new long[_motors.Length];
         _safeStates = [.. Enum.GetValues<SafetyCheck>().Select(limits.SafeStateOf)];
-        _trackingLimit = [.. _motorNames.Select(limits.TrackingErrorRadOf)];
-        _potLimit = [.. _motorNames.Select(limits.PotDistanceRadOf)];
-        _answeredAt = new long[_controllers.Length];
+        TripRecorder trip = (check, joint, measured, limit, unit, now) => Trip(check, joint, measured, limit, unit, now);
+        _motorChecks = new MotorChecks(robot, limits, trip);
+        _moduleChecks = new ModuleChecks(robot, limits, trip);
         var f = _time.TimestampFrequency;
-        _trackingTicks = (long)(limits.TrackingErrorMs * 1e-3 * f);
-        _currentTicks = (long)(limits.OverCurrentMs * 1e-3 * f);
-        _potTicks = (long)(limits.PotMismatchMs * 1e-3 * f);
-        _silentTicks = (long)(limits.ModuleSilentMs * 1e-3 * f);
         _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
         _arms = robot.ArmCount;
-        _watchdogMs = robot.Definition.Modules.WatchdogMs;
         _inputs = new OperatorInputs(_arms);
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
@@ -171,9 +148,6 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     }
 
     private double Ms(long ticks) => ticks * 1e3 / _time.TimestampFrequency;
-
-    private static string ArmName(BusRobot robot, RobotController c) =>
-        c.Definition.Arm >= 0 && c.Definition.Arm < robot.Definition.Arms.Count ? robot.Definition.Arms[c.Definition.Arm].Name : "?";
 
     /// <summary>An emergency stop asked for from another thread (<see cref="RequestEmergencyStop"/>).</summary>
     private sealed record EmergencyStopRequest(string Source, string Reason);
