@@ -114,7 +114,7 @@ public static class HeadlessRun
 
     /// <summary>The command line's E-STOP (<see cref="RunOptions.EmergencyStop"/>) goes to the supervisor, as any operator E-STOP.</summary>
     private static CancellationTokenRegistration OperatorStop(RunOptions options, SafetySupervisor supervisor) =>
-        options.EmergencyStop.Register(() => supervisor.RequestEmergencyStop("cli", "E-STOP from the command line"));
+        options.EmergencyStop.Register(() => supervisor.EmergencyStop("cli", "E-STOP from the command line"));
 
     /// <summary>
     /// Without a pedal wired to the robot node (the shipped graphs), the harness is the operator and holds the pedal

@@ -159,9 +159,6 @@ public sealed partial class SafetySupervisor
         Volatile.Write(ref _stopRequest, new EmergencyStopRequest(source, reason));
     }
 
-    /// <summary>The same as <see cref="EmergencyStop"/> (kept for the callers that say they are on another thread).</summary>
-    public void RequestEmergencyStop(string source, string reason) => EmergencyStop(source, reason);
-
     /// <summary>
     /// Leaves E-STOP for INIT, on an operator's explicit request: motors off, faults cleared. The robot must be homed
     /// again (<see cref="Home"/>) before it may move: positions may have been lost.

@@ -149,6 +149,6 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
 
     private double Ms(long ticks) => ticks * 1e3 / _time.TimestampFrequency;
 
-    /// <summary>An emergency stop asked for from another thread (<see cref="RequestEmergencyStop"/>).</summary>
+    /// <summary>An emergency stop asked for from another thread (<see cref="EmergencyStop"/>).</summary>
     private sealed record EmergencyStopRequest(string Source, string Reason);
 }

@@ -78,7 +78,7 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
         _modules = new ModuleSupervisor(_layout, client, _roster, _options, Events, _faults, _life, arming);
         _setup = new RobotSetup(_layout, client, _roster, Events, _faults, _life, arming, _modules, _feedback, _setpoints, seed);
         _homing = new Homing(_layout, client, _roster, _life, _setup, _feedback);
-        _goals = new GoalWriter(_layout, client, _roster, _setpoints, _feedback, seed, _life, _stop)
+        _goals = new GoalWriter(_layout, client, _roster, _setpoints, seed, _life, _stop)
         {
             TorqueOff = _setup.TorqueOffAtWrite,
             Clear = _modules.ClearInModules,

@@ -50,7 +50,7 @@ public sealed class RunLevelTests
         var supervisor = session.Supervisor;
         supervisor.PedalDown("pedal");
         session.RunVirtual(100);
-        var asker = new Thread(() => supervisor.RequestEmergencyStop("cli", "E-STOP key on the command line"));
+        var asker = new Thread(() => supervisor.EmergencyStop("cli", "E-STOP key on the command line"));
         asker.Start();
         asker.Join();
         Assert.Equal(RunLevel.PedalDown, supervisor.Level); // nothing happens off the bus thread
@@ -63,7 +63,7 @@ public sealed class RunLevelTests
         Assert.Equal(RobotState.Enabled, session.Robot.State); // hold: motors on, goals frozen
         session.RunVirtual(session.Loop.TickCount + 100);
         Assert.Single(supervisor.Trips); // taken once
-        Assert.Throws<ArgumentException>(() => supervisor.RequestEmergencyStop(" ", "x"));
+        Assert.Throws<ArgumentException>(() => supervisor.EmergencyStop(" ", "x"));
     }
 
     [Fact]

@@ -19,7 +19,6 @@ internal sealed class GoalWriter
     private readonly BusClient _client;
     private readonly ModuleRoster _roster;
     private readonly SetpointExchange _setpoints;
-    private readonly FeedbackExchange _feedback;
     private readonly GoalSeed _seed;
     private readonly RobotLifecycle _life;
     private readonly TimeProvider _time;
@@ -38,14 +37,13 @@ internal sealed class GoalWriter
     private long _stepCapHits;
     private double _largestCappedStep;
 
-    public GoalWriter(RobotLayout layout, BusClient client, ModuleRoster roster, SetpointExchange setpoints, FeedbackExchange feedback, GoalSeed seed, RobotLifecycle life, BusInterruption stop)
+    public GoalWriter(RobotLayout layout, BusClient client, ModuleRoster roster, SetpointExchange setpoints, GoalSeed seed, RobotLifecycle life, BusInterruption stop)
     {
         _stop = stop;
         _layout = layout;
         _client = client;
         _roster = roster;
         _setpoints = setpoints;
-        _feedback = feedback;
         _seed = seed;
         _life = life;
         _time = client.Time;
