@@ -10,7 +10,11 @@ namespace RobotControl.Plugins.Touch;
 /// A Geomagic Touch: outputs stylus position (mm), orientation (rad) and two buttons (0/1) in the device frame;
 /// inputs a 3-DOF force (N, device frame) to render, normally fed back one tick later from the haptics chain, and
 /// <c>force_enable</c>, the seam for the safety supervisor's run level (below 0.5: no force reaches the device).
-/// <c>sample_age_ms</c> says how old the reading is (the master timeout: wire it to the robot's <c>arm.input_age_ms</c>).
+/// <c>sample_age_ms</c> says how old the reading is (the master timeout: wire it to the robot's <c>arm.input_age_ms</c>);
+/// <c>speed_mm_s</c> how fast the tip moved between the last two readings, for every back end alike: beyond the
+/// robot file's <c>safety.master_speed_max_mm_s</c> (a jump no hand can make) the pose and buttons keep the last
+/// plausible reading, so nothing downstream (homing, scaling, the clutch, the IK's warm start) ever sees it; wire it
+/// to the robot's <c>arm.input_speed_mm_s</c> and the supervisor trips <c>master_jump</c>.
 /// The device itself is behind <see cref="ITouchBackend"/>, chosen by the <c>backend</c> setting. Injected device
 /// faults (<see cref="IFaultInjectable"/>) go to the back end when it takes them (the simulated one does, the real device does not).
 /// </summary>
@@ -30,6 +34,9 @@ public sealed class TouchPlugin : Plugin<TouchSettings>, IFaultInjectable
     private readonly OutputPort _button1;
     private readonly OutputPort _button2;
     private readonly OutputPort _sampleAge;
+    private readonly OutputPort _speed;
+    private readonly TipSpeed _motion = new();
+    private readonly double _speedLimit;
 
     /// <summary>Creates the plug-in with the back end its settings name.</summary>
     public TouchPlugin(TouchSettings settings, PluginContext context)
@@ -48,6 +55,7 @@ public sealed class TouchPlugin : Plugin<TouchSettings>, IFaultInjectable
         : base(settings, context)
     {
         Backend = backend(Settings, Context);
+        _speedLimit = (Context.Robot?.Safety ?? new Hardware.Model.SafetyLimits()).MasterSpeedMaxMmPerS;
         _fx = DeclareInput("force_x", "N", "force to render along device x");
         _fy = DeclareInput("force_y", "N", "force to render along device y");
         _fz = DeclareInput("force_z", "N", "force to render along device z");
@@ -61,6 +69,7 @@ public sealed class TouchPlugin : Plugin<TouchSettings>, IFaultInjectable
         _button1 = DeclareOutput("button1", SafeValue.Zero, "", "first button (1 = pressed)");
         _button2 = DeclareOutput("button2", SafeValue.Zero, "", "second button (1 = pressed)");
         _sampleAge = DeclareOutput("sample_age_ms", SafeValue.HoldLastFinite, "ms", "how old the reading is (0: new this tick); wire it to the robot's arm.input_age_ms (the master timeout)");
+        _speed = DeclareOutput("speed_mm_s", SafeValue.HoldLastFinite, "mm/s", "stylus tip speed implied by the last two readings, before any scaling; wire it to the robot's arm.input_speed_mm_s (a jump no hand can make is a soft trip)");
     }
 
     /// <summary>The back end.</summary>
@@ -73,6 +82,14 @@ public sealed class TouchPlugin : Plugin<TouchSettings>, IFaultInjectable
     public override void Tick(in TickContext context)
     {
         var sample = Backend.Exchange(context.TimeSeconds, new TouchForce(Read(_fx), Read(_fy), Read(_fz), Read(_forceEnable) >= 0.5));
+        var speed = _motion.Speed(context.TimeSeconds - (sample.AgeMs * 1e-3), sample.XMm, sample.YMm, sample.ZMm);
+        Write(_speed, speed);
+        Write(_sampleAge, sample.AgeMs);
+        if (!(speed <= _speedLimit))
+        {
+            return; // a jump no hand can make: nothing downstream sees it, the pose keeps the last plausible reading
+        }
+
         Write(_x, sample.XMm);
         Write(_y, sample.YMm);
         Write(_z, sample.ZMm);
@@ -81,7 +98,6 @@ public sealed class TouchPlugin : Plugin<TouchSettings>, IFaultInjectable
         Write(_yaw, sample.YawRad);
         Write(_button1, sample.Button1 ? 1 : 0);
         Write(_button2, sample.Button2 ? 1 : 0);
-        Write(_sampleAge, sample.AgeMs);
     }
 
     /// <inheritdoc />

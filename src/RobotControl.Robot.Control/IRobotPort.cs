@@ -40,9 +40,10 @@ public interface IRobotPort
 
 /// <summary>
 /// The operator as the control loop reports it to a safety supervisor, straight, with no mailbox in the robot layer:
-/// how old each arm's input device data is (the master timeout), the teleoperation pedal and the emergency-stop pedal
-/// or button; and whether teleoperation may drive the arms now. Called by the loop's thread every tick; every member
-/// is non-blocking and allocation-free.
+/// that the loop ticked (the loop's own deadline), how old each arm's input device data is (the master timeout) and how
+/// fast the hand at the device moves (a jump), the teleoperation pedal and the emergency-stop pedal or button; and
+/// whether teleoperation may drive the arms now. Called by the loop's thread every tick; every member is non-blocking
+/// and allocation-free.
 /// </summary>
 public interface IOperatorPort
 {
@@ -52,8 +53,19 @@ public interface IOperatorPort
     /// </summary>
     bool TeleopAllowed { get; }
 
+    /// <summary>The loop ticked (first thing each tick): a loop whose last tick is too old is behind (a deadline miss).</summary>
+    void ReportTick();
+
     /// <summary>How old the input device data driving <paramref name="arm"/> is, ms (NaN: unknown, taken as too old).</summary>
     void ReportInputAge(int arm, double ageMs);
+
+    /// <summary>
+    /// The speed of the hand at the device driving <paramref name="arm"/>, mm/s before any scaling (a Touch's
+    /// <c>speed_mm_s</c>); beyond what a hand can do it is a jump and the answer is false: the arm holds from this
+    /// tick's setpoints on (teleoperation stops until the operator presses the pedal again).
+    /// </summary>
+    /// <returns>False when the sample is implausible: the caller publishes no setpoints this tick.</returns>
+    bool ReportInputSpeed(int arm, double mmPerS);
 
     /// <summary>The teleoperation pedal (called every tick only when the graph wires one).</summary>
     void ReportPedal(bool down);

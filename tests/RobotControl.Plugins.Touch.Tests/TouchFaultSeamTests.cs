@@ -28,15 +28,24 @@ public sealed class TouchFaultSeamTests
     }
 
     [Fact]
-    public void A_jump_through_the_seam_moves_the_x_output_from_the_next_tick_on()
+    public void A_jump_through_the_seam_is_reported_as_a_speed_no_hand_makes_and_the_pose_keeps_the_last_plausible_reading()
     {
         var touch = AtRest();
         var before = touch.Xyz();
         Assert.Equal(10.0, before.X, 1);
+        Assert.Equal(0.0, touch["speed_mm_s"], 6);
 
         Seam(touch).Inject(DeviceFault.Jump(50));
         touch.Tick();
 
+        // 50 mm in one 1 ms reading: 50 m/s at the device, past the 2 m/s limit; nothing downstream sees the jump.
+        Assert.Equal(50_000, touch["speed_mm_s"], 0);
+        Assert.Equal(before, touch.Xyz());
+
+        // The device keeps its offset: the next reading is plausible again (from the jumped one) and goes through; the
+        // robot's supervisor has put the run at PEDAL_UP, and the clutch re-offsets the master before it drives again.
+        touch.Tick();
+        Assert.Equal(0.0, touch["speed_mm_s"], 6);
         Assert.Equal(before.X + 50, touch["x"], 3);
         Assert.Equal(before.Y, touch["y"], 3);
     }

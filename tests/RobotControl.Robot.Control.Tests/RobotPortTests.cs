@@ -6,7 +6,7 @@ public sealed class RobotPortTests
     [Fact]
     public void The_robot_port_carries_no_operator_input_which_goes_to_the_supervisor_s_operator_port()
     {
-        string[] operatorMembers = ["TeleopAllowed", "ReportInputAge", "ReportPedal", "ReportEmergencyStop"];
+        string[] operatorMembers = ["TeleopAllowed", "ReportTick", "ReportInputAge", "ReportInputSpeed", "ReportPedal", "ReportEmergencyStop"];
 
         Assert.All(operatorMembers, name => Assert.Empty(typeof(IRobotPort).GetMember(name)));
         Assert.All(operatorMembers, name => Assert.Single(typeof(IOperatorPort).GetMember(name)));

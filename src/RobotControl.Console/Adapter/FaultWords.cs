@@ -25,13 +25,15 @@ internal static class FaultWords
             SafetyCheck.TrackingError => $"{who} could not follow its command",
             SafetyCheck.PotMismatch => $"{who} position sensors disagree",
             SafetyCheck.NonFinite => who.Length == 0 || trip.Joint == "setpoint" ? "the control software sent an invalid position" : $"{who} reported an invalid value",
-            SafetyCheck.DeadlineMiss => string.Create(c, $"the control computer paused for {trip.Measured:0} ms"),
+            SafetyCheck.HostStall => string.Create(c, $"the control computer paused for {trip.Measured:0} ms"),
+            SafetyCheck.DeadlineMiss => string.Create(c, $"the control loop fell {trip.Measured:0} ms behind"),
+            SafetyCheck.MasterJump => $"{who} hand controller jumped",
             SafetyCheck.ModuleFault => "a motor module reported a fault (watchdog or hardware error)",
             SafetyCheck.Operator => "emergency stop pressed",
             SafetyCheck.MasterTimeout => $"{who} hand controller stopped sending",
             _ => trip.Check.Name(),
         };
-        var action = trip.Check == SafetyCheck.MasterTimeout && trip.Action == SafeState.Hold
+        var action = trip.Soft
             ? "arms holding, press the pedal again"
             : trip.Action == SafeState.Hold ? "arms holding" : "motors off";
         return new FaultView(seconds, $"{Capitalise(what)} — {action}", trip.Check.Name(), trip.Joint, trip.Measured, trip.Limit, trip.Unit, trip.Action.Name());

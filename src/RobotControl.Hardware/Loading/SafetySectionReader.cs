@@ -11,7 +11,8 @@ namespace RobotControl.Hardware.Loading;
 /// <code>
 /// "safety": { "tracking_error_rad": 0.35, "tracking_error_ms": 50, "current_limit_fraction": 0.95,
 ///             "over_current_ms": 50, "pot_distance_rad": 0.087, "pot_mismatch_ms": 10,
-///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10, "master_timeout_ms": 50, "bus_watchdog_max_ms": 30,
+///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10, "master_timeout_ms": 50, "master_speed_max_mm_s": 2000,
+///             "bus_watchdog_max_ms": 30,
 ///             "safe_state": { "tracking_error": "hold", "over_current": "torque_off" },
 ///             "motors": { "right.elbow": { "tracking_error_rad": 0.2, "pot_distance_rad": 0.1 } } }
 /// </code>
@@ -64,6 +65,7 @@ internal static class SafetySectionReader
             ModuleSilentMs = Field("module_silent_ms", 0, MaxMs, d.ModuleSilentMs),
             DeadlineMissesInARow = s.IntegerOrNull("deadline_misses_in_a_row", 1, 100_000, required: false) ?? d.DeadlineMissesInARow,
             MasterTimeoutMs = Field("master_timeout_ms", 1, MaxMs, d.MasterTimeoutMs),
+            MasterSpeedMaxMmPerS = Field("master_speed_max_mm_s", 100, 100_000, d.MasterSpeedMaxMmPerS),
             BusWatchdogMaxMs = Field("bus_watchdog_max_ms", 1, 60_000, d.BusWatchdogMaxMs),
             SafeStates = ReadSafeStates(OptionalObject(s, "safe_state")),
             Motors = ReadMotors(OptionalObject(s, "motors"), motorNames),

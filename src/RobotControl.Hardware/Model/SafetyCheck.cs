@@ -18,7 +18,10 @@ public enum SafetyCheck
     /// <summary>|joint pot position − encoder (Hall) position| beyond the limit for longer than the time.</summary>
     PotMismatch,
 
-    /// <summary>The cycle came too late: a gap of k loop periods or more since the previous one (a host stall).</summary>
+    /// <summary>
+    /// The control loop fell behind: its last tick is k loop periods old or more (a tick that overran or hangs, a loop
+    /// thread that was not scheduled). Graded as <see cref="HostStall"/>.
+    /// </summary>
     DeadlineMiss,
 
     /// <summary>The robot layer reports a module fault (firmware watchdog, hardware error).</summary>
@@ -32,6 +35,16 @@ public enum SafetyCheck
 
     /// <summary>While the motors are on, a module's bus watchdog (read back) is off or not the robot file's period.</summary>
     WatchdogUnarmed,
+
+    /// <summary>
+    /// The host stalled: a gap of k loop periods or more between two bus cycles. Graded: shorter than the modules'
+    /// torque-off stage (their second watchdog stage) it is a soft trip, the arms hold and the run level goes back to
+    /// PEDAL_UP; from that stage on the modules have switched their motors off, and it is E_STOP.
+    /// </summary>
+    HostStall,
+
+    /// <summary>A master sample implies a hand speed no hand can produce (a jump): a soft trip, hold and PEDAL_UP, as the master timeout.</summary>
+    MasterJump,
 }
 
 /// <summary>What the robot does after a trip.</summary>
@@ -60,6 +73,8 @@ public static class SafetyNames
         SafetyCheck.Operator => "operator",
         SafetyCheck.MasterTimeout => "master_timeout",
         SafetyCheck.WatchdogUnarmed => "watchdog_unarmed",
+        SafetyCheck.HostStall => "host_stall",
+        SafetyCheck.MasterJump => "master_jump",
         _ => check.ToString(),
     };
 

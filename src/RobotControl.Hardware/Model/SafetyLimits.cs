@@ -24,14 +24,20 @@ public sealed record SafetyLimits
     /// <summary>How long the pot and the encoder may disagree, ms (default 10, as the dVRK's check).</summary>
     public double PotMismatchMs { get; init; } = 10;
 
-    /// <summary>How long a module may stay silent, ms (default 10).</summary>
+    /// <summary>How long a module may stay silent, ms (default 10); graded as a host stall (<see cref="SafetyCheck.HostStall"/>).</summary>
     public double ModuleSilentMs { get; init; } = 10;
 
-    /// <summary>Loop periods without a cycle that count as a stall (k consecutive deadline misses; default 10).</summary>
+    /// <summary>Loop periods without a bus cycle (a host stall) or without a loop tick (deadline misses) that count as a stall (default 10).</summary>
     public int DeadlineMissesInARow { get; init; } = 10;
 
     /// <summary>How old the input device data driving an arm may be while teleoperation drives it, ms (default 50: the master timeout).</summary>
     public double MasterTimeoutMs { get; init; } = 50;
+
+    /// <summary>
+    /// The fastest the hand at a master device may move, mm/s at the device, before any scaling (default 2,000: a hand
+    /// does not exceed 2 m/s); a sample implying more is a jump (<see cref="SafetyCheck.MasterJump"/>).
+    /// </summary>
+    public double MasterSpeedMaxMmPerS { get; init; } = 2000;
 
     /// <summary>Longest bus watchdog period the robot file's <c>modules.watchdog_ms</c> may set, ms (default 30, as the dVRK's hardware watchdog).</summary>
     public double BusWatchdogMaxMs { get; init; } = 30;
@@ -45,14 +51,19 @@ public sealed record SafetyLimits
     /// <summary>The pot/encoder distance limit of motor <paramref name="motor"/> (its own, else <see cref="PotDistanceRad"/>).</summary>
     public double PotDistanceRadOf(string motor) => Motors.TryGetValue(motor, out var m) && m.PotDistanceRad is { } v ? v : PotDistanceRad;
 
-    /// <summary>Safe state per check (defaults: hold for soft trips, the master timeout's hold going back to PEDAL_UP instead of E_STOP; torque off for a silent module, over-current, a pot/encoder mismatch, module faults and an unarmed bus watchdog).</summary>
+    /// <summary>
+    /// Safe state per check. Defaults: hold for the soft trips (a host stall, a loop behind, a silent module, each
+    /// shorter than the modules' torque-off stage; the master timeout and a master jump), which go back to PEDAL_UP
+    /// instead of E_STOP, and for a non-finite value, a tracking error and the operator's stop; torque off for
+    /// over-current, a pot/encoder mismatch, module faults and an unarmed bus watchdog.
+    /// </summary>
     public IReadOnlyDictionary<SafetyCheck, SafeState> SafeStates { get; init; } = DefaultSafeStates;
 
     /// <summary>The defaults of <see cref="SafeStates"/>.</summary>
     public static IReadOnlyDictionary<SafetyCheck, SafeState> DefaultSafeStates { get; } = new Dictionary<SafetyCheck, SafeState>
     {
         [SafetyCheck.NonFinite] = SafeState.Hold,
-        [SafetyCheck.ModuleSilent] = SafeState.TorqueOff,
+        [SafetyCheck.ModuleSilent] = SafeState.Hold,
         [SafetyCheck.TrackingError] = SafeState.Hold,
         [SafetyCheck.OverCurrent] = SafeState.TorqueOff,
         [SafetyCheck.PotMismatch] = SafeState.TorqueOff,
@@ -61,6 +72,8 @@ public sealed record SafetyLimits
         [SafetyCheck.Operator] = SafeState.Hold,
         [SafetyCheck.MasterTimeout] = SafeState.Hold,
         [SafetyCheck.WatchdogUnarmed] = SafeState.TorqueOff,
+        [SafetyCheck.HostStall] = SafeState.Hold,
+        [SafetyCheck.MasterJump] = SafeState.Hold,
     };
 
     /// <summary>The safe state of <paramref name="check"/>.</summary>

@@ -73,6 +73,7 @@ public static class HeadlessRun
         var safetyFaults = new SafetyFaultSchedule(options.Inject.TimedFaults, sim, bus, session.Graph, begin, clock.TimestampFrequency);
         var around = hooks?.AroundTick;
         PressPedal(session, begin, faults);
+        var surgeon = new ReEngagement(session.Supervisor, clock, options.ReEngageAfter, ReEngagement.PedalWired(session.Graph));
         var loop = session.Loop;
         var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
@@ -83,6 +84,7 @@ public static class HeadlessRun
             ticks,
             () =>
             {
+                surgeon.Poll();
                 if (loop.TickCount - reported >= progressEvery || loop.TickCount >= ticks)
                 {
                     reported = loop.TickCount;
@@ -109,7 +111,7 @@ public static class HeadlessRun
         hooks?.AfterRun?.Invoke(session);
         var elapsed = clock.GetElapsedTime(begin);
         var check = session.Stop();
-        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults);
+        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults, surgeon.Presses);
     }
 
     /// <summary>The command line's E-STOP (<see cref="RunOptions.EmergencyStop"/>) goes to the supervisor, as any operator E-STOP.</summary>
@@ -125,7 +127,7 @@ public static class HeadlessRun
     private static void PressPedal(RobotSession session, long begin, List<FaultEntry> faults)
     {
         session.Supervisor.SetOrigin(begin);
-        if (session.Graph.Document.Wires.Any(w => w.To == $"{RobotNode.InstanceName}.pedal"))
+        if (ReEngagement.PedalWired(session.Graph))
         {
             return;
         }
@@ -171,12 +173,14 @@ public static class HeadlessRun
         session.StartRealtime(threads); // warm-up, homing, motors on: the run's time starts when the threads do
         var begin = clock.GetTimestamp();
         PressPedal(session, begin, faults);
+        var surgeon = new ReEngagement(session.Supervisor, clock, options.ReEngageAfter, ReEngagement.PedalWired(session.Graph));
         try
         {
             while (clock.GetElapsedTime(begin) < options.Duration && loop.ThreadFailure is null && !stopper.ShouldStop())
             {
                 // Short sleeps: a fault or a stop request is acted on within a few milliseconds.
                 Thread.Sleep(PollInterval);
+                surgeon.Poll();
                 var now = clock.GetElapsedTime(begin);
                 if (now >= nextProgress || now >= options.Duration)
                 {
@@ -198,7 +202,7 @@ public static class HeadlessRun
             faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"control loop failed: {failure.Message}"));
         }
 
-        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults) with
+        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults, surgeon.Presses) with
         {
             Scheduling = $"{threads.Outcome}; GC {options.RealtimeGcLatency}{(session.CpuLatency is { } latency ? "; " + latency : "")}",
             Compiled = new CompiledAfterStart(loop.MethodsCompiledAfterFirstTick, loop.CompileTimeAfterFirstTick, bus.MethodsCompiledAfterFirstCycle, bus.CompileTimeAfterFirstCycle),
@@ -206,7 +210,7 @@ public static class HeadlessRun
     }
 
     /// <summary>The report, with how the run ended and what the modules said after the motors were switched off.</summary>
-    private static RunReport Finish(FaultStop stopper, StopCheck check, ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, RobotEventSubscription events, List<FaultEntry> faults)
+    private static RunReport Finish(FaultStop stopper, StopCheck check, ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, RobotEventSubscription events, List<FaultEntry> faults, int reEngagements)
     {
         DrainEvents(events, elapsed, faults);
         if (stopper.Fault is { } fault)
@@ -219,7 +223,7 @@ public static class HeadlessRun
             faults.Add(new FaultEntry(elapsed.TotalSeconds, "harness", $"after the stop, torque still on at module(s) [{string.Join(", ", check.TorqueOn)}], no answer from [{string.Join(", ", check.Unreachable)}]"));
         }
 
-        return Report(loop, meter, elapsed, session, faults) with { Interrupted = stopper.Interrupted, StoppedOnFault = stopper.Fault, Stop = check };
+        return Report(loop, meter, elapsed, session, faults, reEngagements) with { Interrupted = stopper.Interrupted, StoppedOnFault = stopper.Fault, Stop = check };
     }
 
     private static TrackingMeter Meter(RobotNode node, IRobotPort port, out TrackingMeter meter) => meter = new TrackingMeter(node, port);
@@ -227,7 +231,7 @@ public static class HeadlessRun
     private static RunProgress Progress(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, TimeSpan duration, int faults, string robotFaults) =>
         new(elapsed, duration, loop.TickCount, loop.Statistics.DeadlineMisses, meter.RmsMm, meter.LastErrorMm.Max(), faults, robotFaults);
 
-    private static RunReport Report(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, List<FaultEntry> faults)
+    private static RunReport Report(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, List<FaultEntry> faults, int reEngagements)
     {
         var loaded = session.Graph;
         var bus = session.Robot;
@@ -253,7 +257,7 @@ public static class HeadlessRun
             meter.MaxMm,
             new BusReport(totals.Frames, totals.CrcErrors, totals.Timeouts, totals.Retries, bus.Client.LateReplies),
             all,
-            SafetyReport.Of(session.Supervisor));
+            SafetyReport.Of(session.Supervisor, elapsed.TotalSeconds, reEngagements));
     }
 
     private static void DrainEvents(RobotEventSubscription events, TimeSpan at, List<FaultEntry> faults)

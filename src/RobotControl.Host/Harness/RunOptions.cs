@@ -52,6 +52,13 @@ public sealed record RunOptions
     /// <summary>How often (loop time) progress is reported.</summary>
     public TimeSpan ProgressInterval { get; init; } = TimeSpan.FromMilliseconds(250);
 
+    /// <summary>
+    /// Without a pedal wired to the robot node the harness is the surgeon: after a soft trip (a short host stall, the
+    /// master timeout, a jump) puts the run back at PEDAL_UP, it presses the pedal again this long after (default 200
+    /// ms); null: never, the run stays at PEDAL_UP.
+    /// </summary>
+    public TimeSpan? ReEngageAfter { get; init; } = TimeSpan.FromMilliseconds(200);
+
     /// <summary>Settings of graph instances replaced for this run (<c>--set</c>), validated as the file's own.</summary>
     public IReadOnlyList<RobotControl.Runtime.GraphFiles.SettingOverride> SettingOverrides { get; init; } = [];
 }

@@ -9,31 +9,28 @@ namespace RobotControl.Host.Safety;
 /// <summary>The per-cycle checks, run inside the bus cycle between read and write; allocation-free while nothing trips.</summary>
 public sealed partial class SafetySupervisor
 {
+    /// <summary>The checks of time alone, just before the write (bus thread): a host stall's hold is taken by this write.</summary>
+    void ICycleCheck.BeforeWrite() => CheckGap(_time.GetTimestamp());
+
     /// <summary>The per-cycle checks: step <b>check</b> of the robot's cycle, on the bus thread.</summary>
     void ICycleCheck.Check()
     {
         FollowOperator();
         if (Level == RunLevel.Init)
         {
-            _lastCycle = 0;
+            Volatile.Write(ref _lastCycle, 0);
             return; // motors off and nothing commanded: the checks start with homing
         }
 
         var now = _time.GetTimestamp();
-        var gap = _lastCycle == 0 ? 0 : now - _lastCycle;
-        // Cycles are timed only while the motors hold or follow teleoperation (PEDAL_UP, PEDAL_DOWN): set-up and
-        // homing run the bus at their own pace (first calls, homing moves), with the motors off or firmware-driven.
-        _lastCycle = Level is RunLevel.PedalUp or RunLevel.PedalDown ? now : 0;
-        if (gap > _stallTicks)
-        {
-            Trip(SafetyCheck.DeadlineMiss, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
-        }
-
+        CheckGap(now);
         _moduleChecks.CheckSilence(now);
         if (_robot.State == RobotState.Enabled && Level is RunLevel.PedalUp or RunLevel.PedalDown)
         {
             _moduleChecks.CheckWatchdogs(now);
+            CheckLoop(now);
         }
+
         if (_robot.State == RobotState.Fault)
         {
             Trip(SafetyCheck.ModuleFault, string.Empty, (double)_robot.Faults, 0, "fault flags", now);
@@ -49,7 +46,47 @@ public sealed partial class SafetySupervisor
             MasterTimeout(stale.Arm, stale.AgeMs, now);
         }
 
+        CheckJumps(now);
         _motorChecks.Check(driven: _robot.State == RobotState.Enabled, homed: Level is RunLevel.PedalUp or RunLevel.PedalDown, now);
+    }
+
+    /// <summary>
+    /// A host stall: the time since the last cycle (timed before each write and each check, while the motors hold or
+    /// follow teleoperation; set-up and homing run the bus at their own pace, with the motors off or firmware-driven).
+    /// </summary>
+    private void CheckGap(long now)
+    {
+        var last = _lastCycle;
+        var gap = last == 0 ? 0 : now - last;
+        Volatile.Write(ref _lastCycle, Level is RunLevel.PedalUp or RunLevel.PedalDown ? now : 0); // read by TeleopAllowed on the loop's thread
+        if (gap > _stallTicks)
+        {
+            Trip(SafetyCheck.HostStall, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
+        }
+    }
+
+    /// <summary>The loop behind: its last tick older than the stall limit (a tick that overran or hangs).</summary>
+    private void CheckLoop(long now)
+    {
+        var tick = _inputs.LastTick;
+        if (tick != 0 && now - tick > _stallTicks)
+        {
+            Trip(SafetyCheck.DeadlineMiss, "loop", Ms(now - tick), Ms(_stallTicks), "ms", now);
+        }
+    }
+
+    /// <summary>A jump at a master device (the loop's thread asked the robot to hold already): recorded, PEDAL_UP.</summary>
+    private void CheckJumps(long now)
+    {
+        var jumps = _inputs.Jumps;
+        if (jumps == _jumpsSeen)
+        {
+            return;
+        }
+
+        _jumpsSeen = jumps;
+        var (arm, speed) = _inputs.LatestJump;
+        Trip(SafetyCheck.MasterJump, _robot.Definition.Arms[arm].Name, speed, Limits.MasterSpeedMaxMmPerS, "mm/s", now);
     }
 
     /// <summary>The first arm whose input device data is older than the master timeout, with its age (ms), or null.</summary>
@@ -68,28 +105,9 @@ public sealed partial class SafetySupervisor
     }
 
     /// <summary>
-    /// The master timeout: with the safe state hold, the trip is recorded and the run level goes back to PEDAL_UP (the
-    /// arms hold, teleoperation is ignored); with torque off, it is a trip like any other (E_STOP).
+    /// The master timeout: with the safe state hold, a soft trip (the arms hold, back to PEDAL_UP); with torque off, a
+    /// trip like any other (E_STOP).
     /// </summary>
-    private void MasterTimeout(int arm, double age, long now)
-    {
-        var joint = _robot.Definition.Arms[arm].Name;
-        if (_safeStates[(int)SafetyCheck.MasterTimeout] == SafeState.TorqueOff)
-        {
-            Trip(SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", now);
-            return;
-        }
-
-        lock (_tripGate)
-        {
-            if (!_tripped[(int)SafetyCheck.MasterTimeout])
-            {
-                _tripped[(int)SafetyCheck.MasterTimeout] = true;
-                _trips.Add(new SafetyTrip(now, SafetyCheck.MasterTimeout, joint, age, Limits.MasterTimeoutMs, "ms", SafeState.Hold));
-            }
-        }
-
-        PedalUpOnBus(TripSource, string.Create(CultureInfo.InvariantCulture, $"master_timeout {joint}: input data {age:0.#} ms old (limit {Limits.MasterTimeoutMs:0.#}): hold"));
-    }
-
+    private void MasterTimeout(int arm, double age, long now) =>
+        Trip(SafetyCheck.MasterTimeout, _robot.Definition.Arms[arm].Name, age, Limits.MasterTimeoutMs, "ms", now);
 }

@@ -85,7 +85,7 @@ public sealed partial class SafetySupervisor
 
         lock (_tripGate)
         {
-            _tripped[(int)SafetyCheck.MasterTimeout] = false; // a new episode of teleoperation: a new timeout is a new trip
+            Array.Clear(_softTripped); // a new episode of teleoperation: a new timeout, jump or silence is a new trip
         }
 
         _robot.ReleaseHold();
@@ -183,6 +183,7 @@ public sealed partial class SafetySupervisor
         lock (_tripGate)
         {
             Array.Clear(_tripped);
+            Array.Clear(_softTripped);
         }
 
         _motorChecks.Clear();
@@ -235,11 +236,28 @@ public sealed partial class SafetySupervisor
         _lastPedal = pedal;
     }
 
+    /// <summary>
+    /// True while the robot follows the setpoints and the bus cycles on time. From a tick whose bus cycle is late (a
+    /// stall the bus thread has not seen yet) it is false, so that the graph's clutch holds the master's target from
+    /// before the stall and re-engaging starts where the arms hold.
+    /// </summary>
+    public bool TeleopAllowed
+    {
+        get
+        {
+            var last = Volatile.Read(ref _lastCycle);
+            return !_robot.IsHolding && (last == 0 || _time.GetTimestamp() - last <= _stallTicks);
+        }
+    }
+
     /// <inheritdoc />
-    public bool TeleopAllowed => !_robot.IsHolding;
+    public void ReportTick() => _inputs.ReportTick();
 
     /// <inheritdoc />
     public void ReportInputAge(int arm, double ageMs) => _inputs.ReportAge(arm, ageMs);
+
+    /// <inheritdoc />
+    public bool ReportInputSpeed(int arm, double mmPerS) => _inputs.ReportSpeed(arm, mmPerS);
 
     /// <inheritdoc />
     public void ReportPedal(bool down) => _inputs.ReportPedal(down);

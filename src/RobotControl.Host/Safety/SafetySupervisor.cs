@@ -45,10 +45,13 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private readonly ModuleChecks _moduleChecks;
     private readonly OperatorInputs _inputs;
     private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
+    private readonly bool[] _softTripped = new bool[Enum.GetValues<SafetyCheck>().Length];
     private readonly SafeState[] _safeStates; // per check, looked up once: a trip's path does no dictionary lookup
     private readonly long _stallTicks;
+    private readonly double _torqueOffStageMs;
     private readonly int _arms;
     private long _lastCycle;
+    private long _jumpsSeen;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
     private OperatorPedal _lastPedal;
@@ -77,7 +80,8 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         var f = _time.TimestampFrequency;
         _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
         _arms = robot.ArmCount;
-        _inputs = new OperatorInputs(_arms);
+        _inputs = new OperatorInputs(_arms, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
+        _torqueOffStageMs = robot.Definition.Modules.WatchdogMs; // the modules switch their motors off after this much silence
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.CycleCheck = this;
@@ -123,9 +127,30 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     public void SetOrigin(long timestamp) => Origin = timestamp;
 
     /// <summary>Records a trip (once per check until a reset), takes its safe state and moves to E-STOP.</summary>
+    /// <summary>
+    /// Every trip goes through here, graded. A silence (<see cref="SafetyCheck.HostStall"/>,
+    /// <see cref="SafetyCheck.DeadlineMiss"/>, <see cref="SafetyCheck.ModuleSilent"/>) as long as the modules'
+    /// torque-off stage or longer is a trip with the motors off, whatever its safe state: the modules have switched
+    /// them off already. Shorter, and for the master's checks (<see cref="SafetyCheck.MasterTimeout"/>,
+    /// <see cref="SafetyCheck.MasterJump"/>), a safe state of hold makes it a soft trip (<see cref="SoftTrip"/>). Any
+    /// other trip records what crossed which limit, takes the check's safe state at the next write and moves to
+    /// E_STOP; each check trips once until a reset.
+    /// </summary>
     private void Trip(SafetyCheck check, string joint, double measured, double limit, string unit, long now, string source = TripSource, string? reason = null)
     {
         var action = _safeStates[(int)check];
+        var silence = check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent;
+        if (silence && measured >= _torqueOffStageMs)
+        {
+            action = SafeState.TorqueOff;
+            limit = _torqueOffStageMs;
+        }
+        else if (action == SafeState.Hold && (silence || check is SafetyCheck.MasterTimeout or SafetyCheck.MasterJump))
+        {
+            SoftTrip(check, joint, measured, limit, unit, now);
+            return;
+        }
+
         lock (_tripGate)
         {
             if (_tripped[(int)check])
@@ -144,6 +169,35 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         if (Level != RunLevel.EStop)
         {
             _levels.MoveTo(RunLevel.EStop, source, reason ?? $"{check.Name()} {joint}".TrimEnd() + $": {action.Name()}");
+        }
+    }
+
+    /// <summary>
+    /// A soft trip, as the Raven-II treats a stale master: the arms hold at the goals last sent (from the next write, or
+    /// this one when taken before it), the run level goes back from PEDAL_DOWN to PEDAL_UP, and the operator may press the pedal again;
+    /// re-engaging starts from the held positions (the graph's clutch re-offsets the master, see the robot node's
+    /// <c>teleop_enabled</c>). Every host stall is recorded (each is an event of its own); the other soft checks once
+    /// per episode of teleoperation (until the next pedal down), as they stay true cycle after cycle.
+    /// </summary>
+    private void SoftTrip(SafetyCheck check, string joint, double measured, double limit, string unit, long now)
+    {
+        SafetyTrip trip;
+        lock (_tripGate)
+        {
+            if (check != SafetyCheck.HostStall && _softTripped[(int)check])
+            {
+                return; // nothing allocated while the same episode goes on
+            }
+
+            _softTripped[(int)check] = true;
+            trip = new SafetyTrip(now, check, joint, measured, limit, unit, SafeState.Hold, Soft: true);
+            _trips.Add(trip);
+        }
+
+        _robot.HoldAtSent(); // where the arms were going: re-engaging from the setpoints of before the trip cannot step
+        if (Level == RunLevel.PedalDown)
+        {
+            _levels.MoveTo(RunLevel.PedalUp, TripSource, trip.ToString());
         }
     }
 

@@ -10,13 +10,14 @@ namespace RobotControl.Host.Safety;
 /// <param name="Limit">The limit it crossed.</param>
 /// <param name="Unit">Unit of the value and the limit.</param>
 /// <param name="Action">The safe state taken.</param>
-public sealed record SafetyTrip(long Timestamp, SafetyCheck Check, string Joint, double Measured, double Limit, string Unit, SafeState Action)
+/// <param name="Soft">A soft trip: the arms held and the run level went back to PEDAL_UP, not to E_STOP.</param>
+public sealed record SafetyTrip(long Timestamp, SafetyCheck Check, string Joint, double Measured, double Limit, string Unit, SafeState Action, bool Soft = false)
 {
-    /// <summary>The trip in one line: the check, what it concerns, the value measured against its limit, the safe state (e.g. <c>module_silent left.forearm: 52.3 ms (limit 50 ms): torque_off</c>).</summary>
+    /// <summary>The trip in one line: the check, what it concerns, the value measured against its limit, the safe state (e.g. <c>module_silent left.forearm: 52.3 ms (limit 50 ms): torque_off</c>, <c>host_stall: 23.1 ms (limit 10 ms): hold, back to PEDAL_UP</c>).</summary>
     public override string ToString()
     {
         var who = Joint.Length == 0 ? Check.Name() : $"{Check.Name()} {Joint}";
         var value = Unit.Length == 0 ? string.Empty : string.Create(System.Globalization.CultureInfo.InvariantCulture, $": {Measured:0.###} {Unit} (limit {Limit:0.###} {Unit})");
-        return $"{who}{value}: {Action.Name()}";
+        return $"{who}{value}: {Action.Name()}{(Soft ? ", back to PEDAL_UP" : string.Empty)}";
     }
 }

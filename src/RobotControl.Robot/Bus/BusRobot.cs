@@ -175,6 +175,13 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     /// <summary>Freezes every motor's goal at its measured position from the next write on; the setpoints are ignored until <see cref="ReleaseHold"/>.</summary>
     public void HoldAtMeasured() => _goals.HoldAtMeasured();
 
+    /// <summary>
+    /// Freezes every motor's goal at the goal last sent from the next write on (any thread, lock-free): a soft trip's
+    /// hold, so that re-engaging from the setpoints of before it cannot step; the setpoints are ignored until
+    /// <see cref="ReleaseHold"/>. Before any write, the measured positions.
+    /// </summary>
+    public void HoldAtSent() => _goals.HoldAtSent();
+
     /// <summary>The setpoints drive the goals again (each still under the step cap).</summary>
     public void ReleaseHold() => _goals.ReleaseHold();
 
@@ -289,7 +296,11 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     }
 
     /// <inheritdoc />
-    public void Write() => _goals.Write();
+    public void Write()
+    {
+        CycleCheck?.BeforeWrite();
+        _goals.Write();
+    }
 
     /// <inheritdoc />
     public void Read() => _feedback.Read();

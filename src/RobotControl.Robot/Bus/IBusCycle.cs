@@ -8,7 +8,7 @@ namespace RobotControl.Robot.Bus;
 /// </summary>
 public interface IBusCycle
 {
-    /// <summary>Step <b>write</b>: requests first (a stop, a hold, faults cleared), then the latest setpoints become goals, sent to every module.</summary>
+    /// <summary>Step <b>write</b>: the checks of time alone (<see cref="ICycleCheck.BeforeWrite"/>), requests (a stop, a hold, faults cleared), then the latest setpoints become goals, sent to every module.</summary>
     void Write();
 
     /// <summary>Step <b>read</b>: every module's feedback is received (not yet published).</summary>
@@ -30,6 +30,12 @@ public interface IBusCycle
 /// <summary>The per-cycle check of a safety supervisor: no bus traffic, no blocking, no allocation while nothing trips.</summary>
 public interface ICycleCheck
 {
+    /// <summary>
+    /// Runs the checks of time alone (how long since the last cycle: a host stall) just before the write, so that a
+    /// hold decided here is taken by this very write rather than the next (bus thread).
+    /// </summary>
+    void BeforeWrite();
+
     /// <summary>Runs the checks on the cycle's fresh feedback (bus thread).</summary>
     void Check();
 }

@@ -12,6 +12,8 @@ namespace RobotControl.Runtime.Robot;
 /// the robot's fault flags (<c>faults</c>) and <c>teleop_enabled</c> (1 while the run level lets teleoperation drive
 /// the arms: the haptic handles' <c>force_enable</c>). The input <c>right.input_age_ms</c> takes how old the input
 /// device data driving the arm is (a Touch's <c>sample_age_ms</c>) and hands it to the port (the master timeout);
+/// <c>right.input_speed_mm_s</c> takes the hand's speed at that device (a Touch's <c>speed_mm_s</c>): a speed the
+/// operator's port calls implausible (a jump) publishes no setpoints for the arm that tick, and the arm holds;
 /// <c>pedal</c> and <c>estop</c> (0/1, a foot-pedal plug-in's outputs) are handed to the port when wired: the safety
 /// supervisor's run level follows them. Talks to an <see cref="IRobotPort"/> without blocking or allocating.
 /// <para>
@@ -29,6 +31,8 @@ public sealed class RobotNode : Plugin
     private readonly InputPort[][] _setpoints;
     private readonly InputPort[] _jaws;
     private readonly InputPort[] _inputAges;
+    private readonly InputPort[] _inputSpeeds;
+    private readonly bool[] _implausible;
     private readonly InputPort _pedal;
     private readonly InputPort _estop;
     private readonly OutputPort[][] _positions;
@@ -58,6 +62,8 @@ public sealed class RobotNode : Plugin
         _setpoints = new InputPort[arms][];
         _jaws = new InputPort[arms];
         _inputAges = new InputPort[arms];
+        _inputSpeeds = new InputPort[arms];
+        _implausible = new bool[arms];
         _positions = new OutputPort[arms][];
         _currents = new OutputPort[arms][];
         _commanded = new double[arms][];
@@ -67,6 +73,7 @@ public sealed class RobotNode : Plugin
             _setpoints[a] = [.. robot.Joints.Select(j => DeclareInput($"{arm}.{j.Name}", "rad", $"{arm} arm {j.Name} setpoint"))];
             _jaws[a] = DeclareInput($"{arm}.jaw", "rad", $"{arm} arm jaw opening setpoint");
             _inputAges[a] = DeclareInput($"{arm}.input_age_ms", "ms", $"how old the input device data driving the {arm} arm is (a Touch's sample_age_ms; unwired: 0, no master timeout)");
+            _inputSpeeds[a] = DeclareInput($"{arm}.input_speed_mm_s", "mm/s", $"speed of the hand at the input device driving the {arm} arm, before scaling (a Touch's speed_mm_s; unwired: 0, no jump check)");
             _commanded[a] = new double[jointCount];
         }
 
@@ -157,9 +164,11 @@ public sealed class RobotNode : Plugin
 
         if (_operator is { } op)
         {
+            op.ReportTick();
             for (var a = 0; a < _inputAges.Length; a++)
             {
                 op.ReportInputAge(a, Read(_inputAges[a]));
+                _implausible[a] = !op.ReportInputSpeed(a, Read(_inputSpeeds[a]));
             }
 
             if (_pedalWired)
@@ -190,9 +199,9 @@ public sealed class RobotNode : Plugin
         for (var a = 0; a < _setpoints.Length; a++)
         {
             _commandedThisTick[a] = false;
-            if (!_armDriven[a])
+            if (!_armDriven[a] || _implausible[a])
             {
-                continue;
+                continue; // implausible: a jump at the master, and the operator's side has asked the robot to hold
             }
 
             var setpoint = _commanded[a];

@@ -64,7 +64,7 @@ public sealed class EditorPageTests(EditorFixture console)
 
         await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync(new() { Timeout = 15000 });
         Assert.True(await page.GetByTestId("start").IsEnabledAsync());
-        Assert.Equal(3 + 1, await page.Locator(".connection.delayed").CountAsync());
+        Assert.Equal(3 + 1 + 1, await page.Locator(".connection.delayed").CountAsync()); // forces, force_enable, the clutch's follow
         await page.GetByTestId("file-name").FillAsync("built-in-editor.json");
         await page.GetByTestId("save").ClickAsync();
         await page.Locator("#message.ok").Filter(new() { HasTextString = "saved built-in-editor.json" }).WaitForAsync();
@@ -165,7 +165,7 @@ public sealed class EditorPageTests(EditorFixture console)
             await page.ScreenshotAsync(new() { Path = Path.Combine(dir, "graph-editor.png") });
         }
 
-        Assert.Equal(6 + 2, await page.Locator(".connection.delayed").CountAsync());
+        Assert.Equal(6 + 2 + 2, await page.Locator(".connection.delayed").CountAsync()); // forces, force_enable, the clutches' follow
 
         await Close(page);
     }

@@ -137,14 +137,17 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
             var fault = page.GetByTestId("fault");
             await Expect(fault, "Left forearm module stopped answering — motors off", 20000);
             await Expect(page.GetByTestId("run-level"), "E-STOP");
-            // The silent module's trip (the bus retries it meanwhile may trip the cycle-gap check too): its detail opens on a click.
-            var entry = page.Locator(".fault").Filter(new() { HasTextString = "Left forearm module stopped answering" });
+            // The silent module's trips: first soft (arms holding) at 10 ms, then, still silent at the modules' torque-off
+            // stage, the motors off. The second's detail opens on a click.
+            await Expect(page.Locator(".fault").Filter(new() { HasTextString = "Left forearm module stopped answering — arms holding, press the pedal again" }).GetByTestId("fault"), "Left forearm module stopped answering — arms holding, press the pedal again");
+            var entry = page.Locator(".fault").Filter(new() { HasTextString = "Left forearm module stopped answering — motors off" });
             Assert.False(await entry.GetByTestId("fault-detail").IsVisibleAsync());
             await entry.GetByTestId("fault").ClickAsync();
             Assert.True(await entry.GetByTestId("fault-detail").IsVisibleAsync());
             var detail = await entry.GetByTestId("fault-detail").TextContentAsync() ?? string.Empty;
             Assert.Contains("check module_silent · left.forearm", detail, StringComparison.Ordinal);
-            Assert.Contains("limit 10 ms", detail, StringComparison.Ordinal);
+            var stage = Hardware.Loading.RobotLoader.Load(Path.Combine(folder, "lb-estop-off.json")).Modules.WatchdogMs; // the modules' torque-off stage
+            Assert.Contains($"limit {stage} ms", detail, StringComparison.Ordinal);
             Assert.Contains("action torque_off", detail, StringComparison.Ordinal);
             await page.Context.CloseAsync();
         }

@@ -25,7 +25,10 @@ public sealed class MasterInputTests
         Assert.Equal(RunLevel.PedalUp, run.Safety.FinalRunLevel);
         var last = run.Safety.RunLevels[^1];
         Assert.Equal((RunLevel.PedalDown, RunLevel.PedalUp, "supervisor"), (last.From, last.To, last.Source));
-        Assert.StartsWith("master_timeout right: input data", last.Reason, StringComparison.Ordinal);
+        Assert.StartsWith("master_timeout right: 5", last.Reason, StringComparison.Ordinal);
+        Assert.EndsWith(" ms (limit 50 ms): hold, back to PEDAL_UP", last.Reason, StringComparison.Ordinal);
+        Assert.True(trip.Soft);
+        Assert.Equal(0, run.Safety.ReEngagements); // the harness pressed again every 200 ms; the stale data refused each press
         Assert.InRange(last.TimeSeconds - trip.TimeSeconds, 0, 0.001);
         Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven"));
         Assert.True(run.GoalsFrozenFrom(trip.TimeSeconds + 0.1), "goals moved after the hold settled");
@@ -51,18 +54,40 @@ public sealed class MasterInputTests
     }
 
     [Fact]
-    public void An_input_jump_is_bounded_by_the_step_cap_and_does_not_trip()
+    public void A_master_jump_is_a_soft_trip_within_2_ms_no_goal_moves_toward_it_and_re_engaging_does_not_step()
     {
-        // A 50 mm jump of the right master asks the joints for up to 0.41 rad in one write (measured); the step cap
-        // spreads it over 182 capped goals (measured), the arm follows at its maximum speed without a tracking-error
-        // trip, and teleoperation goes on. The no-fault run has no capped goal at all.
+        // A 50 mm jump of the right master in one 1 ms sample implies 50 m/s at the device (limit 2 m/s). The Touch
+        // keeps its last plausible reading, the robot node publishes nothing that tick, the supervisor trips.
         var run = SafetyRun.Of("jump=touch_right:50mm@1s", 1.5);
+        var trip = Assert.Single(run.Safety.Trips);
+        Assert.Equal((SafetyCheck.MasterJump, "right", "mm/s", 2000.0), (trip.Check, trip.Joint, trip.Unit, trip.Limit));
+        Assert.InRange(trip.Measured, 49_000, 51_000);
+        Assert.True(trip.Soft);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0, 0.002);
+        var levels = run.Safety.RunLevels;
+        Assert.Equal([RunLevel.Homing, RunLevel.PedalUp, RunLevel.PedalDown, RunLevel.PedalUp, RunLevel.PedalDown], levels.Select(l => l.To));
+        Assert.Equal("supervisor", levels[3].Source);
+        Assert.Equal("harness", levels[4].Source);
+
+        // Without the check the jump asked the joints for up to 0.41 rad in one write and the step cap spread it over
+        // 182 capped goals (measured before it existed); now no goal ever wanted to move further than the cap: none
+        // toward the jumped pose, none at re-engagement.
+        Assert.Equal(0, run.Safety.StepCapHits);
         Assert.InRange(run.WorstStepOverCap(), 0, 1);
-        Assert.Empty(run.Safety.Trips);
+        Assert.True(run.GoalsFrozenBetween(trip.TimeSeconds + 0.001, levels[4].TimeSeconds), "goals moved while holding");
         Assert.Equal(RunLevel.PedalDown, run.FinalLevel);
-        Assert.InRange(run.Safety.StepCapHits, 100, 300);
-        Assert.InRange(run.Safety.LargestCappedStepRad, 0.3, 0.5);
         Assert.Equal(1500, run.Report.Ticks);
+    }
+
+    [Fact]
+    public void With_torque_off_as_its_safe_state_a_master_jump_is_an_e_stop()
+    {
+        var run = SafetyRun.WithSafetySection("""{ "safe_state": { "master_jump": "torque_off" } }""", "jump=touch_right:50mm@1s", 1.2);
+        var trip = run.Trip(SafetyCheck.MasterJump);
+        Assert.False(trip.Soft);
+        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.Equal(RunLevel.EStop, run.FinalLevel);
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
     }
 
     [Fact]

@@ -16,20 +16,30 @@ public sealed class SafetyFaultTests
     }
 
     [Fact]
-    public void A_silent_module_trips_module_silent_within_its_limit_and_turns_the_torque_off()
+    public void A_silent_module_holds_the_arms_at_its_limit_and_turns_the_torque_off_at_the_modules_torque_off_stage()
     {
         var run = SafetyRun.Of("silent=right.forearm@1s", 1.3);
-        var trip = run.Trip(SafetyCheck.ModuleSilent);
-        Assert.Equal("right.forearm", trip.Joint);
+        var soft = run.Trip(SafetyCheck.ModuleSilent);
+        Assert.Equal("right.forearm", soft.Joint);
         // 10 ms after the module's last answer, checked once per bus cycle; that answer may come a cycle or two before
         // the fault's time (8.8 ms measured from it)
-        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.005, 0.020);
+        Assert.InRange(soft.TimeSeconds - FaultAtS, 0.005, 0.020);
         // measured when the cycle after the limit ends: a cycle with a silent module includes its timeouts, retries and
         // the one margin waited out after a timeout (late replies), 12.6 ms measured
-        Assert.InRange(trip.Measured, 10, 14);
-        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.InRange(soft.Measured, 10, 14);
+        Assert.True(soft.Soft, "shorter than the modules' torque-off stage: a soft trip");
+        Assert.Equal(SafeState.Hold, soft.Action);
+
+        // Still silent at the modules' torque-off stage (their watchdog, 30 ms): the motors go off and it is E_STOP.
+        var off = Assert.Single(run.Safety.Trips, t => t.Check == SafetyCheck.ModuleSilent && !t.Soft);
+        Assert.Equal(SafeState.TorqueOff, off.Action);
+        Assert.Equal(30, off.Limit);
+        Assert.InRange(off.Measured, 30, 36);
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
-        AssertCommon(run, "module_silent");
+        Assert.Equal(RunLevel.EStop, run.FinalLevel);
+        Assert.Equal(RunLevel.PedalUp, run.Safety.RunLevels[^1].From); // the soft trip came first
+        Assert.InRange(run.WorstStepOverCap(), 0, 1);
+        Assert.Contains("\"check\": \"module_silent\"", run.Report.ToJson(), StringComparison.Ordinal);
     }
 
     [Fact]
@@ -112,16 +122,18 @@ public sealed class SafetyFaultTests
     }
 
     [Fact]
-    public void A_host_stall_is_reported_when_the_host_comes_back_the_watchdogs_stopped_the_motors_and_nothing_resumes()
+    public void A_host_stall_past_the_modules_torque_off_stage_is_an_e_stop_with_the_motors_off_and_nothing_resumes()
     {
         var run = SafetyRun.Of("stall=100ms@1s", 1.5);
-        var trip = run.Trip(SafetyCheck.DeadlineMiss);
+        var trip = run.Trip(SafetyCheck.HostStall);
         Assert.InRange(trip.TimeSeconds - FaultAtS, 0.100, 0.105);
         Assert.InRange(trip.Measured, 100, 105);
-        var watchdog = run.Trip(SafetyCheck.ModuleFault);
-        Assert.Equal(SafeState.TorqueOff, watchdog.Action);
+        Assert.False(trip.Soft);
+        Assert.Equal(SafeState.TorqueOff, trip.Action);
+        Assert.Equal(30, trip.Limit); // the robot file's modules.watchdog_ms: the modules switched off at 30 ms
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} driven again"));
-        AssertCommon(run, "deadline_miss");
+        Assert.Equal(0, run.Safety.ReEngagements);
+        AssertCommon(run, "host_stall");
     }
 
     [Fact]

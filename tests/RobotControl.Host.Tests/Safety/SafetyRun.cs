@@ -37,7 +37,11 @@ internal sealed class SafetyRun
     public SafetyReport Safety => Report.Safety!;
 
     /// <summary>A run; <paramref name="afterRun"/> acts on the supervisor after the last tick, before the run level is read.</summary>
-    public static SafetyRun Of(string inject, double seconds, string? graph = null, Action<SafetySupervisor>? afterRun = null)
+    public static SafetyRun Of(string inject, double seconds, string? graph = null, Action<SafetySupervisor>? afterRun = null) =>
+        Of(inject, seconds, TimeSpan.FromMilliseconds(200), graph, afterRun);
+
+    /// <summary>A run whose harness presses the pedal again <paramref name="reEngageAfter"/> after a soft trip (null: never).</summary>
+    public static SafetyRun Of(string inject, double seconds, TimeSpan? reEngageAfter, string? graph = null, Action<SafetySupervisor>? afterRun = null)
     {
         var goal = ControlTable.Firmware["goal_position"];
         GoalFrameSpy? spy = null;
@@ -47,7 +51,7 @@ internal sealed class SafetyRun
         var motors = new List<MotorEnd>();
         var lastForceAt = long.MinValue;
         var report = HeadlessRun.RunVirtual(
-            new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject) },
+            new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject), ReEngageAfter = reEngageAfter },
             TestPlugins.Catalog(),
             new VirtualRunHooks
             {
@@ -126,6 +130,10 @@ internal sealed class SafetyRun
         var off = Safety.Trips.FirstOrDefault(t => t.Action == SafeState.TorqueOff)?.TimeSeconds ?? double.PositiveInfinity;
         return Spy.WorstStepOverCap(Motors.Select(m => (m.ModuleId, m.Channel, m.CountsPerRad, m.SpeedLimitRadS)), 1, OriginS + off);
     }
+
+    /// <summary>The goal frames from <paramref name="fromS"/> to <paramref name="untilS"/> (run time), oldest first.</summary>
+    public List<(double TimeS, Dictionary<byte, int[]> Goals)> FramesBetween(double fromS, double untilS) =>
+        [.. Spy.Frames.Where(f => f.TimeS - OriginS >= fromS && f.TimeS - OriginS < untilS)];
 
     /// <summary>True when every goal frame from <paramref name="fromS"/> (run time) on carries the same goals.</summary>
     public bool GoalsFrozenFrom(double fromS) => GoalsFrozenBetween(fromS, double.PositiveInfinity);

@@ -32,6 +32,44 @@ public sealed class RobotNodeTests
         }
     }
 
+    private sealed class SpeedSource : Plugin
+    {
+        private readonly OutputPort _speed;
+        private readonly long _jumpAt;
+
+        public SpeedSource(long jumpAt)
+            : base(PluginContext.Standalone("hand"))
+        {
+            _jumpAt = jumpAt;
+            _speed = DeclareOutput("speed_mm_s", SafeValue.HoldLastFinite, "mm/s");
+        }
+
+        public override void Tick(in TickContext context) => Write(_speed, context.Index == _jumpAt ? 50_000 : 100);
+    }
+
+    [Fact]
+    public void A_speed_the_operator_port_calls_implausible_publishes_nothing_for_that_arm_that_tick_and_every_tick_is_reported()
+    {
+        var port = new KinematicRobotPort(Repo.Lb) { SpeedLimitMmPerS = 2000 };
+        var node = new RobotNode(Repo.Lb, TimeProvider.System, Repo.Root);
+        node.Attach(port, port);
+        var graph = new PluginGraph();
+        graph.Add(node);
+        graph.Add(new ElbowSource(throwAt: -1));
+        graph.Add(new SpeedSource(jumpAt: 5));
+        graph.Connect("src.elbow", "robot.right.elbow");
+        graph.Connect("hand.speed_mm_s", "robot.right.input_speed_mm_s");
+        node.SetDriven(graph.Wires.Select(w => w.To));
+
+        Ticks.Run(graph.Compile(), 10);
+
+        Assert.Equal(10, port.Ticks);
+        Assert.Equal(9, port.Writes); // tick 5 published nothing
+        var q = new double[5];
+        port.ReadJointPositions(0, q);
+        Assert.Equal(0.509, q[3], 9);
+    }
+
     [Fact]
     public void The_robot_shows_its_joints_as_inputs_and_positions_currents_faults_as_outputs()
     {

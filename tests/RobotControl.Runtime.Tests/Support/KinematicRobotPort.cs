@@ -46,9 +46,19 @@ internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort, IO
     /// <summary>What <see cref="IOperatorPort.TeleopAllowed"/> answers (a supervisor's run level).</summary>
     public bool TeleopAllowed { get; set; } = true;
 
+    /// <summary>The speed limit <see cref="ReportInputSpeed"/> answers against (a supervisor's <c>master_speed_max_mm_s</c>).</summary>
+    public double SpeedLimitMmPerS { get; set; } = double.PositiveInfinity;
+
+    /// <summary>Ticks reported.</summary>
+    public int Ticks { get; private set; }
+
+    public void ReportTick() => Ticks++;
+
     public void ReportInputAge(int arm, double ageMs)
     {
     }
+
+    public bool ReportInputSpeed(int arm, double mmPerS) => mmPerS <= SpeedLimitMmPerS;
 
     public void ReportPedal(bool down)
     {

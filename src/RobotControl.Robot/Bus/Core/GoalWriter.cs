@@ -31,7 +31,7 @@ internal sealed class GoalWriter
     private readonly double[] _jaw = new double[1];
     private long _lastWrite;
     private bool _capPrimed;
-    private volatile int _hold; // 0: none, 1: asked (captured at the next write), 2: holding
+    private volatile int _hold; // 0: none, 1: asked at the measured positions, 3: asked at the goals sent (captured at the next write), 2: holding
     private volatile string? _torqueOffRequest;
     private volatile bool _clearRequested;
     private long _stepCapHits;
@@ -73,6 +73,12 @@ internal sealed class GoalWriter
 
     /// <summary>Freezes every goal at its measured position from the next write on (any thread).</summary>
     public void HoldAtMeasured() => Interlocked.CompareExchange(ref _hold, 1, 0);
+
+    /// <summary>
+    /// Freezes every goal at the goal last sent from the next write on (any thread): where the modules were going, so
+    /// that setpoints from before a soft trip take the arms up again without a step.
+    /// </summary>
+    public void HoldAtSent() => Interlocked.CompareExchange(ref _hold, 3, 0);
 
     /// <summary>The setpoints drive the goals again, each still under the step cap (any thread).</summary>
     public void ReleaseHold() => _hold = 0;
@@ -179,14 +185,15 @@ internal sealed class GoalWriter
     /// <summary>The hold and the step cap (no goal moves further in one write than the motor's speed limit times the time since the last).</summary>
     private void CapAndHold(double dt)
     {
-        if (_hold == 1)
+        var asked = _hold;
+        if (asked is 1 or 3)
         {
             foreach (var m in _layout.Motors)
             {
-                _held[m.Index] = Math.Clamp(m.PositionRad, m.Config.OutputMinRad, m.Config.OutputMaxRad);
+                _held[m.Index] = Math.Clamp(asked == 3 && _capPrimed ? _sent[m.Index] : m.PositionRad, m.Config.OutputMinRad, m.Config.OutputMaxRad);
             }
 
-            Interlocked.CompareExchange(ref _hold, 2, 1);
+            Interlocked.CompareExchange(ref _hold, 2, asked);
         }
 
         var holding = _hold == 2;
