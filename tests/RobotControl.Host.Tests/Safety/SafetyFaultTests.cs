@@ -114,10 +114,12 @@ public sealed class SafetyFaultTests
     [Fact]
     public void A_host_stall_is_reported_when_the_host_comes_back_the_watchdogs_stopped_the_motors_and_nothing_resumes()
     {
-        var run = SafetyRun.Of("stall=100ms@1s", 1.5);
+        // Longer than the modules' second watchdog stage (the robot file's modules.watchdog_off_ms, 500 ms): they hold
+        // from 30 ms on and switch their motors off at 500 ms. (A shorter stall leaves them holding.)
+        var run = SafetyRun.Of("stall=600ms@1s", 2.0);
         var trip = run.Trip(SafetyCheck.DeadlineMiss);
-        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.100, 0.105);
-        Assert.InRange(trip.Measured, 100, 105);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.600, 0.605);
+        Assert.InRange(trip.Measured, 600, 605);
         var watchdog = run.Trip(SafetyCheck.ModuleFault);
         Assert.Equal(SafeState.TorqueOff, watchdog.Action);
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} driven again"));
