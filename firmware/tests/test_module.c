@@ -22,7 +22,8 @@ static void ping_and_timing(void)
     rcfw_advance_us(bus, 70);
     CHECK_EQ(rcfw_bus_read(bus, buf + 7, sizeof buf - 7), 7);
     CHECK_EQ(rcfw_get_tx_enable(bus, 0), 0);
-    const uint8_t expect[] = {0xFF, 0xFF, 0xFD, 0x00, 0x01, 0x07, 0x00, 0x55, 0x00, 0x31, 0x4D, 0x02};
+    const uint8_t expect[] = {0xFF, 0xFF, 0xFD, 0x00, 0x01, 0x07, 0x00, 0x55, 0x00, 0x31, 0x4D,
+                              (uint8_t)rcfw_ct_fields[RCFW_CT_FIELD_FIRMWARE_VERSION].def};
     CHECK(memcmp(buf, expect, sizeof expect) == 0);
     /* wrong ID: silence */
     send_frame(bus, 9, RCFW_INST_PING, 0, 0);
@@ -59,7 +60,7 @@ static void read_write(void)
     send_frame(bus, 1, RCFW_INST_READ, p6, 4);
     CHECK_EQ(collect(bus, 2000, st, 2), 1);
     CHECK_EQ(st[0].error, 0);
-    CHECK_EQ(st[0].data[0], 2); /* firmware version */
+    CHECK_EQ(st[0].data[0], rcfw_ct_fields[RCFW_CT_FIELD_FIRMWARE_VERSION].def);
     CHECK_EQ(st[0].data[1], 1); /* id */
     CHECK_EQ(st[0].data[2], 3); /* baud code */
     /* a read over unmapped bytes (3..5) is an access error, with no data */

@@ -2,7 +2,8 @@
 """Generate the C control-table header/source from protocol/control-table.json.
 
 usage: gen_control_table.py control-table.json out.h out.c
-Checks that fields lie inside their area, do not overlap and have sane defaults."""
+Checks that fields lie inside their area, do not overlap and have sane defaults; a field's named "bits" become
+RCFW_CT_<FIELD>_BIT_<NAME> masks."""
 import json, sys
 
 def main():
@@ -35,6 +36,10 @@ def main():
         if f["count"] > 1:
             h.append("#define RCFW_CT_%s_STRIDE %du" % (n, f["stride"]))
         h.append("#define RCFW_CT_FIELD_%s %d" % (n, i))
+        for bit_name, bit in sorted(f.get("bits", {}).items(), key=lambda b: b[1]):
+            if not 0 <= bit < f["size"] * 8:
+                sys.exit("bit %s of %s outside the field" % (bit_name, f["name"]))
+            h.append("#define RCFW_CT_%s_BIT_%s 0x%02Xu" % (n, bit_name.upper(), 1 << bit))
     h.append("#define RCFW_CT_FIELD_COUNT %d" % len(d["fields"]))
     h += ["typedef struct {", "    uint16_t address;", "    uint8_t size;", "    uint8_t count;",
           "    uint8_t stride;", "    uint8_t flags; /* bit0 writable, bit1 persistent, bit2 signed, bit3 write-only */",

@@ -24,8 +24,14 @@ public readonly record struct HardwareErrors(byte Value)
     /// <summary>After a reset, the restored position disagrees with the pot (cleared by homing the motor).</summary>
     public static HardwareErrors PotMismatch { get; } = Named("pot_mismatch");
 
-    /// <summary>The bus watchdog stopped the motors.</summary>
+    /// <summary>The bus watchdog stopped the motors (its stage 2: no frame for <c>bus_watchdog_off</c> ms).</summary>
     public static HardwareErrors BusWatchdog { get; } = Named("bus_watchdog");
+
+    /// <summary>
+    /// The bus watchdog's stage 1 (no frame for <c>bus_watchdog</c> ms): the module holds every motor where it was and
+    /// refuses goals and torque-on until the host clears this bit (its acknowledgement of the hold).
+    /// </summary>
+    public static HardwareErrors BusHold { get; } = Named("bus_hold");
 
     /// <summary>FRAM parameters were invalid; defaults were loaded.</summary>
     public static HardwareErrors ParametersLost { get; } = Named("parameters_lost");

@@ -16,7 +16,7 @@ import time
 # Control-table addresses (docs/protocol.md): the Dynamixel-standard ones and the module's feedback block.
 MODEL, FW, ID, RDELAY = 0, 6, 7, 9
 MOTOR_COUNT, KP, POS_MAX, POT_POS0 = 2, 20, 32, 36
-TORQUE, HW_ERROR, RESET_CAUSE, WATCHDOG, GOAL, PRESENT, HOME = 224, 228, 229, 230, 232, 248, 324
+TORQUE, HW_ERROR, RESET_CAUSE, WATCHDOG, GOAL, PRESENT, HOME, WATCHDOG_OFF = 224, 228, 229, 230, 232, 248, 324, 326
 CLEAR_KEY = bytes([0x44, 0x58, 0x4C, 0x22])
 
 
@@ -211,6 +211,22 @@ def main():
     expect("clear errors", a, 0x10, b"\x02" + CLEAR_KEY, 0)
     st = ask(a, 0x01)
     c.check("alert bit gone after clear", st is not None and st[1] == 0x00, repr(st))
+
+    # The watchdog's two stages (firmware 3): the second must come after the first (so it is written first: with the
+    # second stage 0, the first alone would switch the motors off); a short silence is a hold (bit 6) that refuses
+    # goals until the host clears the error status.
+    expect("second stage 2000 ms", a, 0x03, wr(WATCHDOG_OFF, struct.pack("<H", 2000)), 0)
+    expect("0x06 first stage not before the second", a, 0x03, wr(WATCHDOG, struct.pack("<H", 2000)), 0x06)
+    expect("bus watchdog 20 ms", a, 0x03, wr(WATCHDOG, struct.pack("<H", 20)), 0)
+    time.sleep(0.3)
+    st = expect("read the error status after a silence", a, 0x02, rd(HW_ERROR, 1), 0)
+    c.check("hold bit set, alert set, not tripped", st is not None and st[1] == 0x80 and st[2] == b"\x40", repr(st))
+    held = expect("read the held goal", a, 0x02, rd(GOAL, 4), 0)[2]
+    expect("0x01 goal while holding", a, 0x03, wr(GOAL, held), 0x01)
+    expect("bus watchdog off", a, 0x03, wr(WATCHDOG, b"\x00\x00"), 0)
+    expect("clear errors (acknowledges the hold)", a, 0x03, wr(HW_ERROR, b"\x00"), 0)
+    expect("goal after the acknowledgement", a, 0x03, wr(GOAL, held), 0)
+    expect("second stage 0 (no hold stage)", a, 0x03, wr(WATCHDOG_OFF, b"\x00\x00"), 0)
 
     # REG WRITE in two modules, one broadcast ACTION: no reply, both applied.
     goal_a = expect("read goal", a, 0x02, rd(GOAL, 4), 0)[2]

@@ -27,6 +27,10 @@ internal sealed record ScenarioResult(
     long Retries,
     int WatchdogFaults,
     IReadOnlyList<string> SafetyTrips,
+    int SoftTrips,
+    int EStops,
+    double PedalDownShare,
+    int ReEngagements,
     double TrackingRmsMm,
     double TrackingMaxMm,
     double TrackingRmsOverVirtual,
@@ -49,7 +53,7 @@ internal sealed record ScenarioResult(
     public string Line() => string.Create(CultureInfo.InvariantCulture,
         $"  {Ticks} ticks, {DeadlineMisses} misses ({DeadlineMissFraction * 100:F3} %), jitter p50/p99/p99.9/max {TickStartJitterUs.P50:F0}/{TickStartJitterUs.P99:F0}/{TickStartJitterUs.P999:F0}/{TickStartJitterUs.Max:F0} us, "
         + $"bus {BusCyclesPerSecond:F0}/s period p50/p99/p99.9/max {BusCyclePeriodUs.P50:F0}/{BusCyclePeriodUs.P99:F0}/{BusCyclePeriodUs.P999:F0}/{BusCyclePeriodUs.Max:F0} us, "
-        + $"late {LateReplies}, crc {CrcErrors}, timeouts {Timeouts}, retries {Retries}, watchdog {WatchdogFaults}, trips {SafetyTrips.Count}, "
+        + $"late {LateReplies}, crc {CrcErrors}, timeouts {Timeouts}, retries {Retries}, watchdog {WatchdogFaults}, trips {SafetyTrips.Count} ({SoftTrips} soft, {EStops} E-STOP), PEDAL_DOWN {PedalDownShare * 100:F2} % (re-engaged {ReEngagements}), "
         + $"tracking {TrackingRmsMm:F3}/{TrackingMaxMm:F3} mm ({TrackingRmsOverVirtual:F2}x virtual), alloc {AllocatedBytesPerTick:F1} B/tick, gen0 {Gen0Collections} gen2 {Gen2Collections}, GC pauses {GcPauseMs:F1} ms (longest recent {GcLongestRecentPauseMs:F1} ms), stolen {StealMs:F0} ms, {Scheduling}{(LoadProblem is null ? "" : "; " + LoadProblem)}")
         + FloorLine()
         + $"\n  simulator: {Simulator}"

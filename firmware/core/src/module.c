@@ -136,18 +136,24 @@ bool rcfw_pot_to_position(const rcfw_module *m, uint8_t motor, uint16_t raw, int
 void rcfwi_apply_params(rcfw_module *m)
 {
     uint8_t hw = m->ct[RCFW_CT_HARDWARE_ERROR_STATUS];
+    bool holding = (hw & RCFW_HWERR_BUS_HOLD) != 0u;
+    const uint32_t per_ms = RCFW_CONTROL_RATE_HZ / 1000u;
     m->ema_k = m->ct[RCFW_CT_CURRENT_FILTER_SHIFT];
     m->limit_step = m->ct[RCFW_CT_CURRENT_LIMIT_STEP];
-    m->wd_limit_ticks = (uint32_t)rcfwi_ct16(m, RCFW_CT_BUS_WATCHDOG) * (RCFW_CONTROL_RATE_HZ / 1000u);
+    m->wd_limit_ticks = (uint32_t)rcfwi_ct16(m, RCFW_CT_BUS_WATCHDOG) * per_ms;
+    uint32_t off = (uint32_t)rcfwi_ct16(m, RCFW_CT_BUS_WATCHDOG_OFF) * per_ms;
+    m->wd_off_ticks = off != 0u ? off : m->wd_limit_ticks; /* 0: no hold stage, torque off at stage 1's time */
     for (uint8_t i = 0; i < m->n_motors; i++) {
         rcfw_motor *mo = &m->motor[i];
         mo->kp = rcfwi_ct16(m, MA(KP, i));
         mo->step_q16 = rcfw_slew_step_q16(rcfwi_ct16(m, MA(SPEED_LIMIT, i)), RCFW_CONTROL_RATE_HZ);
         mo->current_limit = rcfwi_ct16(m, MA(CURRENT_LIMIT, i));
-        mo->mode = rcfwi_ct8(m, MA(CONTROL_MODE, i));
-        int32_t g = rcfwi_ct32(m, MA(GOAL_POSITION, i));
-        int32_t lo = rcfwi_ct32(m, MA(POSITION_MIN, i)), hi = rcfwi_ct32(m, MA(POSITION_MAX, i));
-        mo->goal = g < lo ? lo : (g > hi ? hi : g);
+        mo->mode = holding ? RCFW_MODE_POSITION : rcfwi_ct8(m, MA(CONTROL_MODE, i));
+        if (!holding) { /* a hold keeps the goal it froze (not even clamped: that would be a move) */
+            int32_t g = rcfwi_ct32(m, MA(GOAL_POSITION, i));
+            int32_t lo = rcfwi_ct32(m, MA(POSITION_MIN, i)), hi = rcfwi_ct32(m, MA(POSITION_MAX, i));
+            mo->goal = g < lo ? lo : (g > hi ? hi : g);
+        }
         mo->goal_pwm = (int16_t)rcfwi_ct16(m, MA(GOAL_PWM, i));
         mo->enabled = (uint8_t)(rcfwi_ct8(m, MA(TORQUE_ENABLE, i)) && !(hw & RCFW_HWERR_BUS_WATCHDOG));
     }
@@ -253,12 +259,50 @@ void rcfw_module_init(rcfw_module *m, struct rcfw_port *port, uint8_t n_motors, 
     rcfw_hal_uart_set_baud(port, rcfw_module_baud_bps(m));
 }
 
+/* Bus watchdog stage 2: every motor off, bit3 latched. */
 static void trip_watchdog(rcfw_module *m)
 {
     m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] |= RCFW_HWERR_BUS_WATCHDOG;
     for (uint8_t i = 0; i < m->n_motors; i++) {
         m->ct[MA(TORQUE_ENABLE, i)] = 0;
         m->motor[i].enabled = 0;
+        rcfw_hal_pwm_set(m->port, i, 0);
+        rcfw_hal_bridge_enable(m->port, i, false);
+    }
+}
+
+/* Bus watchdog stage 1: every motor holds where it is now. Its goal and speed-limited setpoint become its present
+ * position, in position mode whatever its control_mode, its goal_pwm 0; the table's goals follow, so the host reads
+ * the held goals and, once it clears bit6, the motors stay there until it writes new ones. Driven motors stay driven
+ * (current limit as usual); bit6 latched. */
+static void enter_hold(rcfw_module *m)
+{
+    for (uint8_t i = 0; i < m->n_motors; i++) {
+        rcfw_motor *mo = &m->motor[i];
+        mo->goal = mo->position;
+        mo->setpoint = mo->position;
+        mo->slew_acc = 0;
+        mo->mode = RCFW_MODE_POSITION;
+        mo->goal_pwm = 0;
+        rcfwi_ct_w32(m, MA(GOAL_POSITION, i), mo->position);
+        rcfwi_ct_w16(m, MA(GOAL_PWM, i), 0);
+    }
+    m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] |= RCFW_HWERR_BUS_HOLD;
+}
+
+/* One control period of the bus watchdog (bus_watchdog 0: off; stopped once stage 2 has tripped). A frame addressed
+ * to the module restarts the count (wd_ticks = 0), also during a hold, which only the host's clear ends. */
+static void watchdog_tick(rcfw_module *m)
+{
+    uint8_t hw = m->ct[RCFW_CT_HARDWARE_ERROR_STATUS];
+    if (m->wd_limit_ticks == 0u || (hw & RCFW_HWERR_BUS_WATCHDOG)) {
+        return;
+    }
+    uint32_t silent = ++m->wd_ticks;
+    if (silent >= m->wd_off_ticks) {
+        trip_watchdog(m);
+    } else if (silent >= m->wd_limit_ticks && !(hw & RCFW_HWERR_BUS_HOLD)) {
+        enter_hold(m);
     }
 }
 
@@ -286,15 +330,7 @@ void rcfw_module_tick(rcfw_module *m)
         rcfw_hal_bridge_enable(m->port, i, mo->enabled != 0u);
         m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] |= mo->errors; /* MERR bits are HWERR bits */
     }
-    if (m->wd_limit_ticks != 0u && !(m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] & RCFW_HWERR_BUS_WATCHDOG)) {
-        if (++m->wd_ticks >= m->wd_limit_ticks) {
-            trip_watchdog(m);
-            for (uint8_t i = 0; i < m->n_motors; i++) {
-                rcfw_hal_pwm_set(m->port, i, 0);
-                rcfw_hal_bridge_enable(m->port, i, false);
-            }
-        }
-    }
+    watchdog_tick(m);
     if (m->rx.in_frame && ++m->rx_idle_ticks >= RCFW_RX_TIMEOUT_TICKS) {
         rcfw_parser_reset(&m->rx);
         m->stats.rx_bad_len++;

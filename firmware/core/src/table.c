@@ -99,6 +99,30 @@ static bool within_limits(const rcfw_module *m, const pending_write *w, uint16_t
     return true;
 }
 
+static uint16_t ct16_after(const rcfw_module *m, const pending_write *w, uint16_t a)
+{
+    return (uint16_t)(ct8_after(m, w, a) | (ct8_after(m, w, (uint16_t)(a + 1u)) << 8));
+}
+
+/* The bus watchdog's stages in order (data limit error otherwise), as the write leaves them: bus_watchdog_off is 0
+ * (no hold stage) or later than bus_watchdog. */
+static bool watchdog_stages_ordered(const rcfw_module *m, const pending_write *w)
+{
+    uint16_t off = ct16_after(m, w, RCFW_CT_BUS_WATCHDOG_OFF);
+    return off == 0u || off > ct16_after(m, w, RCFW_CT_BUS_WATCHDOG);
+}
+
+/* A field whose write would move a motor: a goal (position or PWM), or torque_enable 1. */
+static bool starts_motion(uint16_t start, int32_t v)
+{
+    for (uint8_t i = 0; i < RCFW_CT_MAX_MOTORS; i++) {
+        if (start == MA(GOAL_POSITION, i) || start == MA(GOAL_PWM, i) || (start == MA(TORQUE_ENABLE, i) && v != 0)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 static uint8_t check_value(rcfw_module *m, const pending_write *w, const rcfw_ct_field *f, uint16_t start)
 {
     uint32_t raw = 0;
@@ -110,11 +134,19 @@ static uint8_t check_value(rcfw_module *m, const pending_write *w, const rcfw_ct
                                                                       : (v >= f->min && v <= f->max);
     RCFW_VERIFY(in_range, m->stats.bad_requests, RCFW_ERR_DATA_RANGE);
     RCFW_VERIFY(within_limits(m, w, start), m->stats.bad_requests, RCFW_ERR_DATA_LIMIT);
+    if (start == RCFW_CT_BUS_WATCHDOG || start == RCFW_CT_BUS_WATCHDOG_OFF) {
+        RCFW_VERIFY(watchdog_stages_ordered(m, w), m->stats.bad_requests, RCFW_ERR_DATA_LIMIT);
+    }
     if (start == RCFW_CT_HOME_REQUEST) {
         RCFW_VERIFY(home_allowed(m, w, (uint8_t)v), m->stats.bad_requests, RCFW_ERR_RESULT_FAIL);
     }
     if (start >= RCFW_CT_TORQUE_ENABLE && start < RCFW_CT_TORQUE_ENABLE + RCFW_CT_MAX_MOTORS && v != 0) {
         RCFW_VERIFY(!(m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] & RCFW_HWERR_BUS_WATCHDOG), m->stats.bad_requests,
+                    RCFW_ERR_RESULT_FAIL);
+    }
+    /* while holding (bus watchdog stage 1) nothing starts moving until the host has cleared bit6 */
+    if (starts_motion(start, v)) {
+        RCFW_VERIFY(!(m->ct[RCFW_CT_HARDWARE_ERROR_STATUS] & RCFW_HWERR_BUS_HOLD), m->stats.bad_requests,
                     RCFW_ERR_RESULT_FAIL);
     }
     return 0;

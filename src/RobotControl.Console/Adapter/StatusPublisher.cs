@@ -206,7 +206,7 @@ internal sealed class StatusPublisher : IDisposable
                 c.FirmwareVersion,
                 ResetCause(c.LastResetCause),
                 c.Resets,
-                c.BusWatchdogMs switch { < 0 => "not read yet", 0 => "off", var ms => $"{ms} ms" } + (status.HasAny(HardwareErrors.BusWatchdog) ? ", TRIPPED" : string.Empty),
+                c.BusWatchdogMs switch { < 0 => "not read yet", 0 => "off", var ms => $"{ms} ms" } + (status.HasAny(HardwareErrors.BusWatchdog) ? ", TRIPPED" : status.HasAny(HardwareErrors.BusHold) ? ", HOLDING" : string.Empty),
                 Names(status),
                 motors));
         }

@@ -21,7 +21,9 @@ internal static class ModuleSectionReader
 
         var sink = section.Sink;
         var baud = section.Integer("baud", 9600, 20_000_000);
-        var watchdog = section.Integer("watchdog_ms", 0, 60_000); // 0 (off) is refused against the safety section (SafetySectionReader)
+        // 0 (off) and the order of the two stages are refused against the safety section (SafetySectionReader)
+        var watchdog = section.Integer("watchdog_ms", 0, ModuleLayout.MaxWatchdogMs);
+        var watchdogOff = section.IntegerOrNull("watchdog_off_ms", 0, ModuleLayout.MaxWatchdogMs, required: false) ?? ModuleLayout.DefaultWatchdogOffMs;
         var returnDelay = section.Integer("return_delay_us", 0, 508);
         var modules = new List<ModuleDefinition>();
         var ids = new HashSet<int>();
@@ -121,7 +123,7 @@ internal static class ModuleSectionReader
         }
 
         section.RejectUnknownFields();
-        return new ModuleLayout(baud, watchdog, returnDelay, modules);
+        return new ModuleLayout(baud, watchdog, watchdogOff, returnDelay, modules);
     }
 
     private static PotCalibration? ReadPot(JsonFieldReader? p)

@@ -12,7 +12,7 @@ namespace RobotControl.Hardware.Loading;
 /// "safety": { "tracking_error_rad": 0.35, "tracking_error_ms": 50, "current_limit_fraction": 0.95,
 ///             "over_current_ms": 50, "pot_distance_rad": 0.087, "pot_mismatch_ms": 10,
 ///             "module_silent_ms": 10, "deadline_misses_in_a_row": 10, "master_timeout_ms": 50, "master_speed_max_mm_s": 2000,
-///             "bus_watchdog_max_ms": 30,
+///             "bus_watchdog_max_ms": 30, "bus_watchdog_off_max_ms": 1000,
 ///             "safe_state": { "tracking_error": "hold", "over_current": "torque_off" },
 ///             "motors": { "right.elbow": { "tracking_error_rad": 0.2, "pot_distance_rad": 0.1 } } }
 /// </code>
@@ -24,7 +24,7 @@ internal static class SafetySectionReader
     private const double MaxTrackingErrorRad = Math.PI;
     private const double MaxPotDistanceRad = 2 * Math.PI;
 
-    /// <summary>Reads the section (defaults without one) and checks <c>modules.watchdog_ms</c> against it.</summary>
+    /// <summary>Reads the section (defaults without one) and checks <c>modules.watchdog_ms</c> and <c>modules.watchdog_off_ms</c> against it.</summary>
     /// <param name="root">The robot file's root object.</param>
     /// <param name="modules">The file's modules, as read.</param>
     /// <param name="motorNames">The robot's motor names (<c>arm.motor</c>): the only keys <c>safety.motors</c> may have.</param>
@@ -35,6 +35,7 @@ internal static class SafetySectionReader
         if (root.Has("modules"))
         {
             CheckWatchdog(root.Sink, limits, modules.WatchdogMs, root.FieldPath("modules.watchdog_ms"), root.FieldPath("safety.bus_watchdog_max_ms"));
+            CheckWatchdogOff(root.Sink, limits, modules, root.FieldPath("modules.watchdog_off_ms"), root.FieldPath("modules.watchdog_ms"), root.FieldPath("safety.bus_watchdog_off_max_ms"));
         }
 
         return limits;
@@ -66,7 +67,8 @@ internal static class SafetySectionReader
             DeadlineMissesInARow = s.IntegerOrNull("deadline_misses_in_a_row", 1, 100_000, required: false) ?? d.DeadlineMissesInARow,
             MasterTimeoutMs = Field("master_timeout_ms", 1, MaxMs, d.MasterTimeoutMs),
             MasterSpeedMaxMmPerS = Field("master_speed_max_mm_s", 100, 100_000, d.MasterSpeedMaxMmPerS),
-            BusWatchdogMaxMs = Field("bus_watchdog_max_ms", 1, 60_000, d.BusWatchdogMaxMs),
+            BusWatchdogMaxMs = Field("bus_watchdog_max_ms", 1, ModuleLayout.MaxWatchdogMs, d.BusWatchdogMaxMs),
+            BusWatchdogOffMaxMs = Field("bus_watchdog_off_max_ms", 1, ModuleLayout.MaxWatchdogMs, d.BusWatchdogOffMaxMs),
             SafeStates = ReadSafeStates(OptionalObject(s, "safe_state")),
             Motors = ReadMotors(OptionalObject(s, "motors"), motorNames),
         };
@@ -160,6 +162,34 @@ internal static class SafetySectionReader
         else if (watchdogMs > max)
         {
             sink.Add(watchdogPath, $"is {watchdogMs} ms, longer than {maxPath} ({max:0.###} ms): a module would drive on for {watchdogMs} ms after the host stops");
+        }
+    }
+
+    /// <summary>
+    /// The bus watchdog's second stage (<c>modules.watchdog_off_ms</c>, the modules' <c>bus_watchdog_off</c>) must
+    /// come after the first (<c>modules.watchdog_ms</c>: the modules hold, then switch their motors off) and no later
+    /// than <see cref="SafetyLimits.BusWatchdogOffMaxMs"/>. 0 is refused too: the modules would read it as "no hold
+    /// stage", which the file did not say. Not checked when any of the values was already refused.
+    /// </summary>
+    private static void CheckWatchdogOff(JsonProblemSink sink, SafetyLimits limits, ModuleLayout modules, string offPath, string watchdogPath, string maxPath)
+    {
+        if (sink.HasProblemAt(offPath) || sink.HasProblemAt(watchdogPath) || sink.HasProblemAt(maxPath))
+        {
+            return;
+        }
+
+        var (off, watchdog, max) = (modules.WatchdogOffMs, modules.WatchdogMs, limits.BusWatchdogOffMaxMs);
+        if (off == 0)
+        {
+            sink.Add(offPath, $"is 0, which the modules take as no hold stage (motors off at {watchdogPath}); give the time they switch their motors off, {watchdog + 1} to {max:0.###} ms ({maxPath})");
+        }
+        else if (off <= watchdog)
+        {
+            sink.Add(offPath, $"is {off} ms, not longer than {watchdogPath} ({watchdog} ms): the modules switch their motors off this long after the host stops, after holding them from {watchdogPath} on");
+        }
+        else if (off > max)
+        {
+            sink.Add(offPath, $"is {off} ms, longer than {maxPath} ({max:0.###} ms): a module would hold its motors on its own for {off} ms after the host stops");
         }
     }
 

@@ -5,13 +5,29 @@ namespace RobotControl.Hardware.Model;
 /// friendly name, arm and the motors it drives. Empty when the file has no such section.
 /// </summary>
 /// <param name="BaudRate">Bus speed the modules are configured for, bits/s.</param>
-/// <param name="WatchdogMs">Bus watchdog: a module stops driving when no frame for it arrives for this long.</param>
+/// <param name="WatchdogMs">
+/// Bus watchdog, stage 1: when no frame for it arrives for this long, a module holds every motor where it is (and
+/// refuses new goals until the host acknowledges the hold).
+/// </param>
+/// <param name="WatchdogOffMs">
+/// Bus watchdog, stage 2: when no frame for it arrives for this long (frames during a hold count), a module switches
+/// its motors off; longer than <paramref name="WatchdogMs"/>.
+/// </param>
 /// <param name="ReturnDelayUs">Module reply delay, microseconds.</param>
 /// <param name="Modules">The modules, in file order.</param>
-public sealed record ModuleLayout(int BaudRate, int WatchdogMs, int ReturnDelayUs, IReadOnlyList<ModuleDefinition> Modules)
+public sealed record ModuleLayout(int BaudRate, int WatchdogMs, int WatchdogOffMs, int ReturnDelayUs, IReadOnlyList<ModuleDefinition> Modules)
 {
+    /// <summary>The robot file's <c>modules.watchdog_off_ms</c> when it gives none, ms.</summary>
+    public const int DefaultWatchdogOffMs = 500;
+
+    /// <summary>
+    /// Longest watchdog stage a robot file may give, ms: the range of the modules' <c>bus_watchdog</c> and
+    /// <c>bus_watchdog_off</c> (firmware/protocol/control-table.json; a test holds the two together).
+    /// </summary>
+    public const int MaxWatchdogMs = 60_000;
+
     /// <summary>A robot without modules.</summary>
-    public static ModuleLayout Empty { get; } = new(1_000_000, 100, 0, []);
+    public static ModuleLayout Empty { get; } = new(1_000_000, 100, DefaultWatchdogOffMs, 0, []);
 
     /// <summary>The module with bus ID <paramref name="id"/>, or null.</summary>
     public ModuleDefinition? ById(int id)

@@ -42,6 +42,12 @@ public sealed record SafetyLimits
     /// <summary>Longest bus watchdog period the robot file's <c>modules.watchdog_ms</c> may set, ms (default 30, as the dVRK's hardware watchdog).</summary>
     public double BusWatchdogMaxMs { get; init; } = 30;
 
+    /// <summary>
+    /// Longest a module may hold its motors on its own after the host falls silent before it switches them off: the
+    /// bound of the robot file's <c>modules.watchdog_off_ms</c>, ms (default 1000).
+    /// </summary>
+    public double BusWatchdogOffMaxMs { get; init; } = 1000;
+
     /// <summary>Per-motor thresholds that override the robot-wide ones, by motor name (<c>arm.motor</c>, e.g. <c>right.elbow</c>).</summary>
     public IReadOnlyDictionary<string, MotorSafetyLimits> Motors { get; init; } = new Dictionary<string, MotorSafetyLimits>();
 

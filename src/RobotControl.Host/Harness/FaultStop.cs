@@ -10,14 +10,15 @@ namespace RobotControl.Host.Harness;
 /// When a run must stop: a stop request (Ctrl+C, SIGTERM), or a robot fault that leaves the arm unable to follow
 /// its commands (a module stopped its motors, latched a hardware error or stopped answering, or a safety trip
 /// switched the motors off) unless the run was told to continue. A trip whose safe state is hold does not end the
-/// run: the arms hold at E-STOP and the report names the trip. A module counts as stopped answering once it has been missing for longer than its bus watchdog
-/// period (by then it has stopped its motors itself); a few lost replies on a busy link do not stop the run.
+/// run: the arms hold at E-STOP and the report names the trip. A module counts as stopped answering once it has been
+/// missing for longer than its bus watchdog's second stage (<c>modules.watchdog_off_ms</c>: by then it has stopped its
+/// motors itself); a few lost replies on a busy link do not stop the run.
 /// Checked once per bus cycle (virtual) or every few milliseconds (real time); allocates only when it stops.
 /// </summary>
 internal sealed class FaultStop(BusRobot robot, bool continueOnFault, CancellationToken stop, SafetySupervisor? supervisor = null)
 {
     private readonly TimeProvider _clock = robot.Client.Time;
-    private readonly long _grace = robot.Client.Time.TimestampFrequency * Math.Max(1, robot.Definition.Modules.WatchdogMs) / 1000;
+    private readonly long _grace = robot.Client.Time.TimestampFrequency * Math.Max(1, robot.Definition.Modules.WatchdogOffMs) / 1000;
     private long _missingSince = -1;
 
     /// <summary>The fault that stopped the run (null: none).</summary>
@@ -70,7 +71,7 @@ internal sealed class FaultStop(BusRobot robot, bool continueOnFault, Cancellati
         if (now - _missingSince > _grace)
         {
             var missing = robot.Controllers.Where(c => !c.Present).Select(c => $"{c.Id} \"{c.Name}\"");
-            Fault = $"module(s) {string.Join(", ", missing)} stopped answering for more than {robot.Definition.Modules.WatchdogMs} ms";
+            Fault = $"module(s) {string.Join(", ", missing)} stopped answering for more than {robot.Definition.Modules.WatchdogOffMs} ms";
             return true;
         }
 

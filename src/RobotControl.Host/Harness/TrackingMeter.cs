@@ -9,7 +9,9 @@ namespace RobotControl.Host.Harness;
 /// <summary>
 /// Tracking error on the loop thread, after every tick: the distance between the commanded tool position (forward
 /// kinematics of the joint setpoints the robot node sent) and the tool position computed from the joint positions the
-/// modules report, per commanded arm. Keeps the RMS and the maximum; allocation-free.
+/// modules report, per commanded arm, on the ticks where teleoperation drives the arms (the robot node's
+/// <c>teleop_enabled</c>: at PEDAL_DOWN; a hold after a trip is not tracking). Keeps the RMS and the maximum;
+/// allocation-free.
 /// </summary>
 internal sealed class TrackingMeter : ITickObserver
 {
@@ -47,7 +49,7 @@ internal sealed class TrackingMeter : ITickObserver
     {
         for (var arm = 0; arm < _port.ArmCount; arm++)
         {
-            if (!_node.CommandedThisTick(arm))
+            if (!_node.TeleopEnabled || !_node.CommandedThisTick(arm))
             {
                 continue;
             }

@@ -49,6 +49,20 @@ internal sealed class ModuleChecks
         }
     }
 
+    /// <summary>The first module silent for longer than its limit at <paramref name="now"/>, with how long (ms); null: none.</summary>
+    public (string Module, double Ms)? Silent(long now)
+    {
+        for (var i = 0; i < _controllers.Length; i++)
+        {
+            if (_controllers[i].MissedReplies != 0 && _answeredAt[i] != 0 && now - _answeredAt[i] > _silentTicks)
+            {
+                return (_names[i], (now - _answeredAt[i]) * 1e3 / _frequency);
+            }
+        }
+
+        return null;
+    }
+
     /// <summary>Every module's armed watchdog (call while the motors are on).</summary>
     public void CheckWatchdogs(long now)
     {

@@ -101,7 +101,7 @@ public sealed record SafetyReport(RunLevel FinalRunLevel, IReadOnlyList<SafetyRe
         yield return FormattableString.Invariant($"  safety: final run level {FinalRunLevel.Name()}; levels {string.Join(" -> ", RunLevels.Select(l => l.From.Name()).Take(1).Concat(RunLevels.Select(l => l.To.Name())))}; step cap hits {StepCapHits}; trips {Trips.Count} ({Trips.Count(t => t.Soft)} soft); {PedalDownSeconds:F3} s at PEDAL_DOWN; re-engaged {ReEngagements}");
         foreach (var t in Trips)
         {
-            yield return FormattableString.Invariant($"    {t.TimeSeconds,8:F3} s  {t.Check.Name()} {t.Joint}: {t.Measured:G4} {t.Unit} (limit {t.Limit:G4}) -> {t.Action.Name()}{(t.Soft ? ", PEDAL_UP" : string.Empty)}");
+            yield return FormattableString.Invariant($"    {t.TimeSeconds,8:F3} s  {(t.Check.Name() + " " + t.Joint).TrimEnd()}: {t.Measured:G4} {t.Unit} (limit {t.Limit:G4}) -> {t.Action.Name()}{(t.Soft ? ", PEDAL_UP" : string.Empty)}");
         }
     }
 

@@ -9,8 +9,16 @@ namespace RobotControl.Host.Safety;
 /// <summary>The per-cycle checks, run inside the bus cycle between read and write; allocation-free while nothing trips.</summary>
 public sealed partial class SafetySupervisor
 {
-    /// <summary>The checks of time alone, just before the write (bus thread): a host stall's hold is taken by this write.</summary>
-    void ICycleCheck.BeforeWrite() => CheckGap(_time.GetTimestamp());
+    /// <summary>The checks of time alone, just before the write (bus thread): a host stall's or a late loop's hold is taken by this write.</summary>
+    void ICycleCheck.BeforeWrite()
+    {
+        var now = _time.GetTimestamp();
+        CheckGap(now);
+        if (Level == RunLevel.PedalDown)
+        {
+            CheckLoop(now); // before the write that takes the loop's setpoints (on the virtual schedule, after the ticks due)
+        }
+    }
 
     /// <summary>The per-cycle checks: step <b>check</b> of the robot's cycle, on the bus thread.</summary>
     void ICycleCheck.Check()
@@ -28,12 +36,17 @@ public sealed partial class SafetySupervisor
         if (_robot.State == RobotState.Enabled && Level is RunLevel.PedalUp or RunLevel.PedalDown)
         {
             _moduleChecks.CheckWatchdogs(now);
-            CheckLoop(now);
         }
 
         if (_robot.State == RobotState.Fault)
         {
             Trip(SafetyCheck.ModuleFault, string.Empty, (double)_robot.Faults, 0, "fault flags", now);
+        }
+        else if (_robot.ModulesHolding is > 0 and var holding && Level == RunLevel.PedalDown)
+        {
+            // The modules' first watchdog stage: they heard nothing for modules.watchdog_ms and hold on their own,
+            // refusing goals until acknowledged (at the next pedal down). The soft stage of module_fault.
+            SoftTrip(SafetyCheck.ModuleFault, string.Empty, holding, 0, "modules holding", now);
         }
 
         if ((_robot.Faults & RobotFaults.SetpointRejected) != 0)
@@ -65,7 +78,7 @@ public sealed partial class SafetySupervisor
         }
     }
 
-    /// <summary>The loop behind: its last tick older than the stall limit (a tick that overran or hangs).</summary>
+    /// <summary>The loop behind while it drives the arms (PEDAL_DOWN): its last tick older than the stall limit (a tick that overran or hangs).</summary>
     private void CheckLoop(long now)
     {
         var tick = _inputs.LastTick;

@@ -83,9 +83,25 @@ public sealed partial class SafetySupervisor
             throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the input data of the {_robot.Definition.Arms[stale.Arm].Name} arm is {stale.AgeMs:0.#} ms old (master_timeout_ms {Limits.MasterTimeoutMs:0.#})"));
         }
 
+        var now = _time.GetTimestamp();
+        if (_inputs.LastTick is not 0 and var tick && now - tick > _stallTicks)
+        {
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the control loop has not ticked for {Ms(now - tick):0} ms"));
+        }
+
+        if (_moduleChecks.Silent(now) is { } silent)
+        {
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: module {silent.Module} has not answered for {silent.Ms:0.#} ms (module_silent_ms {Limits.ModuleSilentMs:0.#})"));
+        }
+
         lock (_tripGate)
         {
             Array.Clear(_softTripped); // a new episode of teleoperation: a new timeout, jump or silence is a new trip
+        }
+
+        if (_robot.ModulesHolding > 0)
+        {
+            _robot.RequestHoldAcknowledgement(); // at the next write, before its goals: the modules follow again from where they held
         }
 
         _robot.ReleaseHold();

@@ -81,7 +81,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
         _arms = robot.ArmCount;
         _inputs = new OperatorInputs(_arms, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
-        _torqueOffStageMs = robot.Definition.Modules.WatchdogMs; // the modules switch their motors off after this much silence
+        _torqueOffStageMs = robot.Definition.Modules.WatchdogOffMs; // the modules switch their motors off after this much silence (they hold from WatchdogMs)
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.CycleCheck = this;
@@ -176,15 +176,15 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     /// A soft trip, as the Raven-II treats a stale master: the arms hold at the goals last sent (from the next write, or
     /// this one when taken before it), the run level goes back from PEDAL_DOWN to PEDAL_UP, and the operator may press the pedal again;
     /// re-engaging starts from the held positions (the graph's clutch re-offsets the master, see the robot node's
-    /// <c>teleop_enabled</c>). Every host stall is recorded (each is an event of its own); the other soft checks once
-    /// per episode of teleoperation (until the next pedal down), as they stay true cycle after cycle.
+    /// <c>teleop_enabled</c>). Each check is recorded once per episode of teleoperation (until the next pedal down): the
+    /// one that ended it, not every cycle it stays true (a cycle slowed by a silent module's timeouts is a gap too).
     /// </summary>
     private void SoftTrip(SafetyCheck check, string joint, double measured, double limit, string unit, long now)
     {
         SafetyTrip trip;
         lock (_tripGate)
         {
-            if (check != SafetyCheck.HostStall && _softTripped[(int)check])
+            if (_softTripped[(int)check])
             {
                 return; // nothing allocated while the same episode goes on
             }

@@ -44,7 +44,9 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
 
     /// <summary>
     /// Switches the motors off (through the robot's state machine; if a module refuses, by writing torque and watchdog
-    /// off to every configured module directly) and reads every module back.
+    /// off to every configured module directly) and reads every module back. A module whose only latched error is its
+    /// bus watchdog's first-stage hold, with its motors read back off, has the hold cleared: it means nothing once the
+    /// motors are off, and left latched it would refuse the next run's torque-on.
     /// </summary>
     public static StopCheck TorqueOffAndVerify(BusRobot robot)
     {
@@ -91,6 +93,11 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
             if (channels.Any(b => b != 0))
             {
                 on.Add(who);
+            }
+
+            if (error[0] == (byte)HardwareErrors.BusHold && channels.All(b => b == 0) && robot.Client.Write(c.Id, status.At(0), [0], BusRobot.InsistingRetries).Succeeded)
+            {
+                continue; // only the first watchdog stage's hold, with the motors off: it means nothing now, and left latched it would refuse the next torque-on
             }
 
             if (error[0] != 0)

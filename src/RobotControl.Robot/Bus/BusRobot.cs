@@ -82,6 +82,7 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
         {
             TorqueOff = _setup.TorqueOffAtWrite,
             Clear = _modules.ClearInModules,
+            AcknowledgeHold = _modules.AcknowledgeHold,
         };
         Slot = new BetweenCycles(client, _stop);
         _thread = new BusThread(this, _options, _time);
@@ -134,6 +135,16 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
 
     /// <summary>True while the goals are frozen at the measured positions (<see cref="HoldAtMeasured"/>).</summary>
     public bool IsHolding => _goals.IsHolding;
+
+    /// <summary>
+    /// Present modules holding their motors on their own, as the status poll last found them: no frame reached them for
+    /// the robot file's <c>modules.watchdog_ms</c> (the firmware's bus watchdog, first stage: <c>hardware_error_status</c>
+    /// bit <c>bus_hold</c>, read with the status the poll reads anyway). A holding module refuses goals and torque-on
+    /// until the hold is acknowledged (<see cref="RequestHoldAcknowledgement"/>) and switches its motors off after
+    /// <c>modules.watchdog_off_ms</c> without a frame. Written by the bus thread, read by any thread; per module:
+    /// <see cref="RobotController.BusHold"/>.
+    /// </summary>
+    public int ModulesHolding => _modules.Holding;
 
     /// <summary>
     /// True from an emergency stop's request (<see cref="EmergencyHold"/>) until the write that takes it: whoever runs
@@ -190,6 +201,16 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
 
     /// <summary>Clears latched faults here and in the modules at the next write, re-arming them if torque was on.</summary>
     public void ClearFaults() => _goals.RequestClear();
+
+    /// <summary>
+    /// Acknowledges the modules' bus holds (<see cref="ModulesHolding"/>) at the next write, on the bus thread, before that
+    /// write's goals (any thread, lock-free): each holding module gets <c>hardware_error_status</c> 0 and follows the goals
+    /// from then on, its motors' step cap starting from where they held (the goals sent during the hold were refused);
+    /// a module with another latched error keeps holding until <see cref="ClearFaults"/>. To stay where the modules held
+    /// instead of resuming toward the setpoints, hold at the measured positions first (<see cref="HoldAtMeasured"/>).
+    /// Each module acknowledged is an event (<see cref="Events.HoldAcknowledged"/>).
+    /// </summary>
+    public void RequestHoldAcknowledgement() => _goals.RequestHoldAcknowledgement();
 
     /// <summary>
     /// An emergency stop's action, from any thread, lock-free: hold at the measured positions (and, with

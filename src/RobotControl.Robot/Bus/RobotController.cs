@@ -1,4 +1,5 @@
 using RobotControl.Hardware.Model;
+using RobotControl.Modules;
 
 namespace RobotControl.Robot.Bus;
 
@@ -41,6 +42,12 @@ public sealed class RobotController
 
     /// <summary>Latched hardware error bits last read (see the control table's hardware_error_status).</summary>
     public byte HardwareErrorStatus { get; internal set; }
+
+    /// <summary>
+    /// True when its status, as last read, shows a bus hold: after <c>bus_watchdog</c> ms without a frame it holds
+    /// every motor where it was and refuses goals until the host acknowledges (<see cref="BusRobot.RequestHoldAcknowledgement"/>).
+    /// </summary>
+    public bool BusHold => ((HardwareErrors)HardwareErrorStatus).HasAny(HardwareErrors.BusHold);
 
     /// <summary>
     /// Its bus watchdog period (<c>bus_watchdog</c>, ms; 0: off) as last read back by the status poll, or -1 when not

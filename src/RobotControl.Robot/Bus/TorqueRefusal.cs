@@ -16,7 +16,7 @@ internal static class TorqueRefusal
     /// <param name="name">Module name.</param>
     /// <param name="on">True when torque was being switched on.</param>
     /// <param name="torque">Reply to the torque write.</param>
-    /// <param name="watchdog">Reply to the watchdog write.</param>
+    /// <param name="watchdog">Reply to the watchdog write that failed (its stage 2 or stage 1), or to the last one.</param>
     /// <param name="status">hardware_error_status and reset_cause, or null when they could not be read.</param>
     public static string Describe(byte id, string name, bool on, Reply torque, Reply watchdog, (HardwareErrors Errors, byte ResetCause)? status)
     {
@@ -24,6 +24,7 @@ internal static class TorqueRefusal
         var cause = status switch
         {
             { Errors: var e } when e.HasFlag(HardwareErrors.BusWatchdog) => $"its bus watchdog error is latched ({e}, reset cause {status.Value.ResetCause}): clear the module's errors first",
+            { Errors: var e } when e.HasFlag(HardwareErrors.BusHold) => $"it holds its motors after a bus silence ({e}, reset cause {status.Value.ResetCause}): acknowledge the hold first (BusRobot.RequestHoldAcknowledgement)",
             { Errors: var e } when !e.IsNone => $"it reports latched errors {e} (reset cause {status.Value.ResetCause}): clear them first",
             null when torque.Outcome != ReplyOutcome.Ok && watchdog.Outcome != ReplyOutcome.Ok => "the module does not answer",
             null => "its status could not be read",

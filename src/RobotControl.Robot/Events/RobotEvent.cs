@@ -66,6 +66,24 @@ public sealed record WatchdogTripped(byte ModuleId, string Name) : RobotEvent
     public override string Message => $"module {ModuleId} \"{Name}\": bus watchdog tripped, motors stopped";
 }
 
+/// <summary>A module holds its motors where they were: no frame reached it for its bus watchdog's first stage.</summary>
+/// <param name="ModuleId">Its bus ID.</param>
+/// <param name="Name">Its name in the robot file.</param>
+public sealed record ModuleHolding(byte ModuleId, string Name) : RobotEvent
+{
+    /// <inheritdoc />
+    public override string Message => $"module {ModuleId} \"{Name}\": bus silent for its watchdog's first stage, holding its motors; goals refused until the hold is acknowledged";
+}
+
+/// <summary>The host acknowledged a module's bus hold: it follows the goals again.</summary>
+/// <param name="ModuleId">Its bus ID.</param>
+/// <param name="Name">Its name in the robot file.</param>
+public sealed record HoldAcknowledged(byte ModuleId, string Name) : RobotEvent
+{
+    /// <inheritdoc />
+    public override string Message => $"module {ModuleId} \"{Name}\": hold acknowledged, following the goals again";
+}
+
 /// <summary>A module latched a hardware error (Hall sequence, pot mismatch).</summary>
 /// <param name="ModuleId">Its bus ID.</param>
 /// <param name="Name">Its name in the robot file.</param>

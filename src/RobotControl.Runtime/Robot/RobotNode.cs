@@ -101,6 +101,9 @@ public sealed class RobotNode : Plugin
     /// <summary>The attached port.</summary>
     public IRobotPort? Port => _port;
 
+    /// <summary>The last tick's <c>teleop_enabled</c>: teleoperation drove the arms (the run level allowed it, nothing upstream faulted).</summary>
+    public bool TeleopEnabled { get; private set; } = true;
+
     /// <summary>True once the robot was told to hold because something upstream faulted.</summary>
     public bool Holding { get; private set; }
 
@@ -183,7 +186,8 @@ public sealed class RobotNode : Plugin
         }
 
         Write(_faults, (int)port.Faults);
-        Write(_teleopEnabled, (_operator?.TeleopAllowed ?? true) && !UpstreamFaulted ? 1 : 0);
+        TeleopEnabled = (_operator?.TeleopAllowed ?? true) && !UpstreamFaulted;
+        Write(_teleopEnabled, TeleopEnabled ? 1 : 0);
         if (UpstreamFaulted)
         {
             if (!Holding)

@@ -18,7 +18,8 @@ public sealed class FullStateReadTests
         var client = lb.Robot.Client;
         var ids = lb.Robot.Controllers.Select(c => c.Id).ToArray();
         var lengths = lb.Robot.Controllers.Select(c => c.ChannelSpan * 8).ToArray();
-        Assert.All(lb.Robot.Controllers, c => Assert.Equal(BusClient.FastReadFirmwareVersion, c.FirmwareVersion));
+        Assert.All(lb.Robot.Controllers, c => Assert.Equal(ControlTable.Firmware["firmware_version"].Default, c.FirmwareVersion));
+        Assert.All(lb.Robot.Controllers, c => Assert.True(c.FirmwareVersion >= BusClient.FastReadFirmwareVersion));
 
         lb.Robot.Stop();
         var fast = new byte[lengths.Sum()];

@@ -4,7 +4,7 @@ using RobotControl.Hardware.Model;
 
 namespace RobotControl.Hardware.Tests.Loading;
 
-/// <summary>The robot file's <c>safety</c> section and the bus watchdog it bounds, as the loader reads them.</summary>
+/// <summary>The robot file's <c>safety</c> section and the bus watchdog's two stages it bounds, as the loader reads them.</summary>
 public sealed class SafetySectionTests : IDisposable
 {
     private const string LbMotors =
@@ -24,6 +24,7 @@ public sealed class SafetySectionTests : IDisposable
         Assert.Equal(defaults.TrackingErrorRad, limits.TrackingErrorRad);
         Assert.Equal(defaults.OverCurrentMs, limits.OverCurrentMs);
         Assert.Equal(defaults.BusWatchdogMaxMs, limits.BusWatchdogMaxMs);
+        Assert.Equal(defaults.BusWatchdogOffMaxMs, limits.BusWatchdogOffMaxMs);
         Assert.Equal(defaults.DeadlineMissesInARow, limits.DeadlineMissesInARow);
         Assert.Empty(limits.Motors);
         Assert.Equal(SafeState.TorqueOff, limits.SafeStateOf(SafetyCheck.OverCurrent));
@@ -119,6 +120,41 @@ public sealed class SafetySectionTests : IDisposable
     }
 
     [Fact]
+    public void The_second_stage_comes_after_the_first_and_no_later_than_its_safety_limit()
+    {
+        Assert.Equal(1000, new SafetyLimits().BusWatchdogOffMaxMs);
+        Assert.Equal(500, RobotLoader.Load(RobotFiles.Shipped("lb-1.0.json")).Modules.WatchdogOffMs);
+        Assert.Equal(ModuleLayout.DefaultWatchdogOffMs, LoadModules(WithSafety(null, null, watchdogOffMs: -2)).WatchdogOffMs); // -2: left out
+        Assert.Equal(31, LoadModules(WithSafety(null, null, watchdogOffMs: 31)).WatchdogOffMs);
+
+        AssertOneLine(
+            null,
+            "$.modules.watchdog_off_ms",
+            "is 0, which the modules take as no hold stage (motors off at $.modules.watchdog_ms); give the time they switch their motors off, 31 to 1000 ms ($.safety.bus_watchdog_off_max_ms)",
+            watchdogOffMs: 0);
+        AssertOneLine(
+            null,
+            "$.modules.watchdog_off_ms",
+            "is 30 ms, not longer than $.modules.watchdog_ms (30 ms): the modules switch their motors off this long after the host stops, after holding them from $.modules.watchdog_ms on",
+            watchdogOffMs: 30);
+        AssertOneLine(
+            null,
+            "$.modules.watchdog_off_ms",
+            "is 1500 ms, longer than $.safety.bus_watchdog_off_max_ms (1000 ms): a module would hold its motors on its own for 1500 ms after the host stops",
+            watchdogOffMs: 1500);
+        AssertOneLine(null, "$.modules.watchdog_off_ms", "is -1; must be at least 0", watchdogOffMs: -1);
+        AssertOneLine(null, "$.modules.watchdog_off_ms", "is 60001; must be at most 60000", watchdogOffMs: 60001);
+
+        var relaxed = Load("""{ "bus_watchdog_off_max_ms": 2000 }""", watchdogOffMs: 1500);
+        Assert.Equal(2000, relaxed.BusWatchdogOffMaxMs);
+        AssertOneLine("""{ "bus_watchdog_off_max_ms": 0 }""", "$.safety.bus_watchdog_off_max_ms", "is 0; must be at least 1");
+        AssertOneLine("""{ "bus_watchdog_off_max_ms": 400 }""", "$.modules.watchdog_off_ms", "is 500 ms, longer than $.safety.bus_watchdog_off_max_ms (400 ms): a module would hold its motors on its own for 500 ms after the host stops");
+
+        // A first stage already refused is named alone, not again through the second.
+        AssertOneLine(null, "$.modules.watchdog_ms", "is 600 ms, longer than $.safety.bus_watchdog_max_ms (30 ms): a module would drive on for 600 ms after the host stops", watchdogMs: 600);
+    }
+
+    [Fact]
     public void Every_problem_of_the_section_is_reported_at_once_and_nothing_is_loaded()
     {
         var json = WithSafety("""{ "over_current_ms": -1, "safe_state": { "tracking_error": "brake" }, "motors": { "right.knee": {} } }""", watchdogMs: null);
@@ -129,7 +165,8 @@ public sealed class SafetySectionTests : IDisposable
         Assert.StartsWith("3 problems:", ex.Message, StringComparison.Ordinal);
     }
 
-    private static JsonNode WithSafety(string? safety, int? watchdogMs)
+    /// <summary>The LB-1.0 file with <paramref name="safety"/> as its safety section and the watchdog stages given (null: as shipped; <paramref name="watchdogOffMs"/> -2: left out).</summary>
+    private static JsonNode WithSafety(string? safety, int? watchdogMs, int? watchdogOffMs = null)
     {
         var json = RobotFiles.Json("lb-1.0.json");
         if (safety is not null)
@@ -142,15 +179,26 @@ public sealed class SafetySectionTests : IDisposable
             json["modules"]!["watchdog_ms"] = ms;
         }
 
+        if (watchdogOffMs == -2)
+        {
+            json["modules"]!.AsObject().Remove("watchdog_off_ms");
+        }
+        else if (watchdogOffMs is { } off)
+        {
+            json["modules"]!["watchdog_off_ms"] = off;
+        }
+
         return json;
     }
 
-    private SafetyLimits Load(string safety, int? watchdogMs = null) => RobotLoader.Load(_files.Write(WithSafety(safety, watchdogMs))).Safety;
+    private SafetyLimits Load(string safety, int? watchdogMs = null, int? watchdogOffMs = null) => RobotLoader.Load(_files.Write(WithSafety(safety, watchdogMs, watchdogOffMs))).Safety;
+
+    private ModuleLayout LoadModules(JsonNode json) => RobotLoader.Load(_files.Write(json)).Modules;
 
     /// <summary>Loading fails (no definition) with exactly one problem, printed as the one line <c>file: path: problem</c>.</summary>
-    private void AssertOneLine(string? safety, string jsonPath, string problem, int? watchdogMs = null)
+    private void AssertOneLine(string? safety, string jsonPath, string problem, int? watchdogMs = null, int? watchdogOffMs = null)
     {
-        var path = _files.Write(WithSafety(safety, watchdogMs));
+        var path = _files.Write(WithSafety(safety, watchdogMs, watchdogOffMs));
         var ex = Assert.Throws<RobotDataException>(() => RobotLoader.Load(path));
         var error = Assert.Single(ex.Errors);
         Assert.Equal((path, jsonPath, problem), (error.File, error.Path, error.Message));

@@ -11,11 +11,13 @@ public sealed class FaultStopTests
 {
     private static string Graph() => Graphs.Path("teleop-lb.json");
 
-    /// <summary>Arms module 1's bus watchdog at 1 ms and lets 20 ms of bus time pass in silence: it trips.</summary>
+    /// <summary>Arms module 1's bus watchdog at 1 ms (hold) and 2 ms (torque off) and lets 20 ms of bus time pass in silence: it trips.</summary>
     private static void TripWatchdog(RobotSession session)
     {
         var watchdog = ControlTable.Firmware["bus_watchdog"];
-        Assert.True(session.Robot.Client.Write(1, watchdog.At(0), [1, 0]).Succeeded);
+        var watchdogOff = ControlTable.Firmware["bus_watchdog_off"];
+        Assert.True(session.Robot.Client.Write(1, watchdog.At(0), [1, 0]).Succeeded); // stage 1 first: stage 2 must stay after it
+        Assert.True(session.Robot.Client.Write(1, watchdogOff.At(0), [2, 0]).Succeeded);
         Span<byte> idle = stackalloc byte[16];
         _ = session.Robot.Client.Link.Read(idle, TimeSpan.FromMilliseconds(20));
     }

@@ -18,7 +18,7 @@ public sealed class SafetyFaultTests
     [Fact]
     public void A_silent_module_holds_the_arms_at_its_limit_and_turns_the_torque_off_at_the_modules_torque_off_stage()
     {
-        var run = SafetyRun.Of("silent=right.forearm@1s", 1.3);
+        var run = SafetyRun.Of("silent=right.forearm@1s", 1.7);
         var soft = run.Trip(SafetyCheck.ModuleSilent);
         Assert.Equal("right.forearm", soft.Joint);
         // 10 ms after the module's last answer, checked once per bus cycle; that answer may come a cycle or two before
@@ -30,11 +30,13 @@ public sealed class SafetyFaultTests
         Assert.True(soft.Soft, "shorter than the modules' torque-off stage: a soft trip");
         Assert.Equal(SafeState.Hold, soft.Action);
 
-        // Still silent at the modules' torque-off stage (their watchdog, 30 ms): the motors go off and it is E_STOP.
+        // Still silent at the modules' torque-off stage (modules.watchdog_off_ms, 500 ms): the motors go off and it is
+        // E_STOP. The harness's presses meanwhile were refused: a module is silent.
         var off = Assert.Single(run.Safety.Trips, t => t.Check == SafetyCheck.ModuleSilent && !t.Soft);
         Assert.Equal(SafeState.TorqueOff, off.Action);
-        Assert.Equal(30, off.Limit);
-        Assert.InRange(off.Measured, 30, 36);
+        Assert.Equal(500, off.Limit);
+        Assert.InRange(off.Measured, 500, 515);
+        Assert.Equal(0, run.Safety.ReEngagements);
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} still driven"));
         Assert.Equal(RunLevel.EStop, run.FinalLevel);
         Assert.Equal(RunLevel.PedalUp, run.Safety.RunLevels[^1].From); // the soft trip came first
@@ -124,13 +126,17 @@ public sealed class SafetyFaultTests
     [Fact]
     public void A_host_stall_past_the_modules_torque_off_stage_is_an_e_stop_with_the_motors_off_and_nothing_resumes()
     {
-        var run = SafetyRun.Of("stall=100ms@1s", 1.5);
+        // Longer than the modules' second watchdog stage (the robot file's modules.watchdog_off_ms, 500 ms): they hold
+        // from 30 ms on and switch their motors off at 500 ms; the host, back, trips with the motors off.
+        var run = SafetyRun.Of("stall=600ms@1s", 2.0);
         var trip = run.Trip(SafetyCheck.HostStall);
-        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.100, 0.105);
-        Assert.InRange(trip.Measured, 100, 105);
+        Assert.InRange(trip.TimeSeconds - FaultAtS, 0.600, 0.605);
+        Assert.InRange(trip.Measured, 600, 605);
         Assert.False(trip.Soft);
         Assert.Equal(SafeState.TorqueOff, trip.Action);
-        Assert.Equal(30, trip.Limit); // the robot file's modules.watchdog_ms: the modules switched off at 30 ms
+        Assert.Equal(500, trip.Limit); // the robot file's modules.watchdog_off_ms
+        Assert.All(run.Report.Stop!.LatchedErrors, e => Assert.Contains("bus_watchdog", e, StringComparison.Ordinal)); // the modules' own torque-off, read back
+        Assert.Equal(6, run.Report.Stop.LatchedErrors.Count);
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} driven again"));
         Assert.Equal(0, run.Safety.ReEngagements);
         AssertCommon(run, "host_stall");

@@ -71,14 +71,16 @@ public sealed class FaultTests
     }
 
     [Fact]
-    public void The_watchdog_stops_the_motors_when_the_host_falls_silent()
+    public void The_watchdog_stops_the_motors_when_the_host_falls_silent_past_its_second_stage()
     {
         using var lb = new VirtualLb();
         lb.Robot.WriteJointSetpoints(0, [-40 * Deg, 0, 0, 120 * Deg, 0]);
         lb.Robot.RunFor(TimeSpan.FromMilliseconds(100));
         Assert.All(lb.Sim.Axes, a => Assert.True(a.DriverEnabled));
 
-        lb.Sim.Advance(TimeSpan.FromMilliseconds(lb.Definition.Modules.WatchdogMs + 20)); // the host sends nothing
+        lb.Sim.Advance(TimeSpan.FromMilliseconds(lb.Definition.Modules.WatchdogOffMs - 20)); // the host sends nothing
+        Assert.All(lb.Sim.Axes, a => Assert.True(a.DriverEnabled)); // holding (stage 1), not off
+        lb.Sim.Advance(TimeSpan.FromMilliseconds(40));
         Assert.All(lb.Sim.Axes, a => Assert.False(a.DriverEnabled));
         lb.Sim.Advance(TimeSpan.FromMilliseconds(100)); // coasting ends
         var elbow = lb.Sim.Axis(0, "elbow").OutputAngleRad;

@@ -31,6 +31,8 @@ public sealed class RobotEventTests
             "module 2 \"x\" reset (watchdog); had no position record and homed from its pot; its position disagrees with the pot: motors left off",
             new ModuleResetEvent(2, "x", "watchdog", false, true).Message);
         Assert.Equal("module 4 \"x\": bus watchdog tripped, motors stopped", new WatchdogTripped(4, "x").Message);
+        Assert.Equal("module 4 \"x\": bus silent for its watchdog's first stage, holding its motors; goals refused until the hold is acknowledged", new ModuleHolding(4, "x").Message);
+        Assert.Equal("module 4 \"x\": hold acknowledged, following the goals again", new HoldAcknowledged(4, "x").Message);
         Assert.Equal("module 4 \"x\": hardware error hall, pot_mismatch", new HardwareErrorLatched(4, "x", HardwareErrors.Hall | HardwareErrors.PotMismatch).Message);
         Assert.Equal("bus error: gone", new BusError("gone").Message);
     }
@@ -42,7 +44,8 @@ public sealed class RobotEventTests
         var status = table.Bits("hardware_error_status");
         Assert.Equal(1 << status["pot_mismatch"], HardwareErrors.PotMismatch.Value);
         Assert.Equal(1 << status["bus_watchdog"], HardwareErrors.BusWatchdog.Value);
-        Assert.Equal(6, status.Count);
+        Assert.Equal(1 << status["bus_hold"], HardwareErrors.BusHold.Value);
+        Assert.Equal(7, status.Count);
         Assert.All(table.Bits("motor_error"), b => Assert.Equal(status[b.Key], b.Value)); // motor_error shares the module's bits
         Assert.Equal("brown-out", table.Codes("reset_cause")[2]);
         Assert.Empty(table.Codes("kp"));

@@ -54,7 +54,7 @@ public sealed class RobotStateTests
         using var lb = new VirtualLb();
         lb.Robot.WriteJointSetpoints(0, [-40 * Deg, 0, 0, 120 * Deg, 0]);
         lb.Robot.RunFor(TimeSpan.FromMilliseconds(100));
-        lb.Sim.Advance(TimeSpan.FromMilliseconds(lb.Definition.Modules.WatchdogMs + 20)); // the host sends nothing
+        lb.Sim.Advance(TimeSpan.FromMilliseconds(lb.Definition.Modules.WatchdogOffMs + 20)); // the host sends nothing, past stage 2
         lb.Robot.RunFor(TimeSpan.FromMilliseconds(30));
         Assert.True(lb.Robot.Faults.HasFlag(RobotFaults.WatchdogTripped));
         Assert.Equal(RobotState.Fault, lb.Robot.State);

@@ -85,9 +85,14 @@ public sealed class PtyEndToEndTests
                 robot.RunCycle();
                 if (robot.Faults.HasFlag(RobotControl.Robot.Control.RobotFaults.WatchdogTripped))
                 {
-                    // A loaded machine can stall this process longer than the 100 ms bus watchdog: the modules stop,
-                    // as they must; acknowledge and go on.
+                    // A loaded machine can stall this process longer than the bus watchdog's second stage: the modules
+                    // stop, as they must; acknowledge and go on.
                     robot.ClearFaults();
+                }
+                else if (robot.ModulesHolding > 0)
+                {
+                    // A shorter stall (past the first stage): the modules hold and refuse the goals until acknowledged.
+                    robot.RequestHoldAcknowledgement();
                 }
             }
 

@@ -14,13 +14,14 @@
 #define RCFW_RX_TIMEOUT_TICKS 20u   /* 2 ms of silence inside a frame drops it */
 #define RCFW_RUNTIME_SAVE_TICKS 10u /* position/goal record at most every 1 ms */
 
-/* hardware_error_status bits */
-#define RCFW_HWERR_OVERCURRENT 0x01u
-#define RCFW_HWERR_HALL 0x02u
-#define RCFW_HWERR_POT_MISMATCH 0x04u
-#define RCFW_HWERR_BUS_WATCHDOG 0x08u
-#define RCFW_HWERR_PARAMS_LOST 0x10u
-#define RCFW_HWERR_POSITION_LOST 0x20u
+/* hardware_error_status bits (their positions are the field's "bits" in control-table.json) */
+#define RCFW_HWERR_OVERCURRENT RCFW_CT_HARDWARE_ERROR_STATUS_BIT_OVER_CURRENT
+#define RCFW_HWERR_HALL RCFW_CT_HARDWARE_ERROR_STATUS_BIT_HALL
+#define RCFW_HWERR_POT_MISMATCH RCFW_CT_HARDWARE_ERROR_STATUS_BIT_POT_MISMATCH
+#define RCFW_HWERR_BUS_WATCHDOG RCFW_CT_HARDWARE_ERROR_STATUS_BIT_BUS_WATCHDOG   /* stage 2: torque off */
+#define RCFW_HWERR_PARAMS_LOST RCFW_CT_HARDWARE_ERROR_STATUS_BIT_PARAMETERS_LOST
+#define RCFW_HWERR_POSITION_LOST RCFW_CT_HARDWARE_ERROR_STATUS_BIT_POSITION_LOST
+#define RCFW_HWERR_BUS_HOLD RCFW_CT_HARDWARE_ERROR_STATUS_BIT_BUS_HOLD           /* stage 1: holding */
 
 /* reset_cause values */
 #define RCFW_CAUSE_POWER_ON 1u
@@ -64,8 +65,11 @@ typedef struct rcfw_module {
     uint8_t runtime_due;
     uint16_t runtime_div;
     uint16_t rx_idle_ticks;
+    /* bus watchdog: ticks since the last valid frame addressed to the module; stage 1 (hold) at wd_limit_ticks,
+     * stage 2 (torque off) at wd_off_ticks (= wd_limit_ticks when bus_watchdog_off is 0: no hold stage) */
     uint32_t wd_ticks;
     uint32_t wd_limit_ticks;
+    uint32_t wd_off_ticks;
     rcfw_store params;
     rcfw_store runtime;
     uint8_t runtime_saved[RCFW_RUNTIME_LEN];

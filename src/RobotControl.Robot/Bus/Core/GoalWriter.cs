@@ -8,8 +8,8 @@ namespace RobotControl.Robot.Bus;
 /// the measured positions while torque is off), under the hold and the step cap, sent to every module in one sync
 /// write. Written by the bus thread alone. Other threads ask, lock-free, for what the next write takes up first: a
 /// hold (<see cref="HoldAtMeasured"/>), the motors off (<see cref="RequestTorqueOff"/>), faults cleared
-/// (<see cref="RequestClear"/>); a supervisor's action therefore reaches the wire at the next write, never from inside
-/// the check.
+/// (<see cref="RequestClear"/>), the modules' bus holds acknowledged (<see cref="RequestHoldAcknowledgement"/>); a
+/// supervisor's action therefore reaches the wire at the next write, never from inside the check.
 /// </summary>
 [WrittenBy(RobotThread.Bus)]
 internal sealed class GoalWriter
@@ -34,6 +34,7 @@ internal sealed class GoalWriter
     private volatile int _hold; // 0: none, 1: asked at the measured positions, 3: asked at the goals sent (captured at the next write), 2: holding
     private volatile string? _torqueOffRequest;
     private volatile bool _clearRequested;
+    private volatile bool _holdAcknowledgementRequested;
     private long _stepCapHits;
     private double _largestCappedStep;
 
@@ -54,11 +55,14 @@ internal sealed class GoalWriter
         _a = new double[layout.JointCount];
     }
 
-    /// <summary>Runs before the goals are made, on the bus thread: a requested torque-off, then a requested clear.</summary>
+    /// <summary>Runs before the goals are made, on the bus thread: a requested torque-off, then a requested clear, then a requested hold acknowledgement.</summary>
     public Action<string>? TorqueOff { get; set; }
 
     /// <summary>Clears the faults in the modules (the module supervisor's), on the bus thread.</summary>
     public Action? Clear { get; set; }
+
+    /// <summary>Acknowledges one module's bus hold, true when done (the module supervisor's), on the bus thread.</summary>
+    public Func<RobotController, bool>? AcknowledgeHold { get; set; }
 
     public long StepCapHits => Interlocked.Read(ref _stepCapHits);
 
@@ -88,6 +92,9 @@ internal sealed class GoalWriter
 
     /// <summary>Faults are cleared at the next write (any thread).</summary>
     public void RequestClear() => _clearRequested = true;
+
+    /// <summary>The modules' bus holds are acknowledged at the next write, before its goals (any thread).</summary>
+    public void RequestHoldAcknowledgement() => _holdAcknowledgementRequested = true;
 
     /// <summary>
     /// An emergency stop's action (any thread, lock-free): hold, and with <paramref name="torqueOff"/> the motors off, at
@@ -126,6 +133,12 @@ internal sealed class GoalWriter
             Clear?.Invoke();
         }
 
+        if (_holdAcknowledgementRequested)
+        {
+            _holdAcknowledgementRequested = false;
+            AcknowledgeHolds();
+        }
+
         ComputeGoals(dt);
         CapAndHold(dt);
         var active = _roster.Active;
@@ -144,6 +157,27 @@ internal sealed class GoalWriter
         }
 
         _client.SyncWrite(_layout.GoalAddress, _layout.GoalLength, active.Ids, data);
+    }
+
+    /// <summary>
+    /// Every holding module's acknowledgement. The step cap of an acknowledged module's motors restarts from where they
+    /// held (their measured positions), not from the goals sent meanwhile, which the module refused: the next goals
+    /// move from the held positions at most the cap, never a step toward what was sent during the hold.
+    /// </summary>
+    private void AcknowledgeHolds()
+    {
+        foreach (var c in _roster.Active.Controllers)
+        {
+            if (AcknowledgeHold?.Invoke(c) != true)
+            {
+                continue;
+            }
+
+            foreach (var m in c.MotorArray)
+            {
+                Volatile.Write(ref _sent[m.Index], m.PositionRad);
+            }
+        }
     }
 
     private void ComputeGoals(double dt)

@@ -6,8 +6,10 @@ using RobotControl.Robot.Events;
 namespace RobotControl.Robot.Bus;
 
 /// <summary>
-/// Switching a module's motors on or off: torque, then its bus watchdog (armed with the robot file's period when on,
-/// 0 when off), each write insisting (<see cref="BusRobot.InsistingRetries"/>). Bus thread only.
+/// Switching a module's motors on or off: torque, then its bus watchdog (armed with the robot file's two stages when
+/// on: <c>bus_watchdog_off</c>, then <c>bus_watchdog</c>, so the module never holds a stage 2 that is not after stage 1;
+/// <c>bus_watchdog</c> 0 when off, which switches both stages off), each write insisting
+/// (<see cref="BusRobot.InsistingRetries"/>). Bus thread only.
 /// </summary>
 [WrittenBy(RobotThread.Bus)]
 internal sealed class ModuleArming(RobotLayout layout, BusClient client, ModuleRoster roster, RobotEventStream events)
@@ -18,6 +20,8 @@ internal sealed class ModuleArming(RobotLayout layout, BusClient client, ModuleR
     {
         Span<byte> watchdog = stackalloc byte[2];
         BinaryPrimitives.WriteUInt16LittleEndian(watchdog, (ushort)(on ? layout.WatchdogMs : 0));
+        Span<byte> watchdogOff = stackalloc byte[2];
+        BinaryPrimitives.WriteUInt16LittleEndian(watchdogOff, (ushort)layout.WatchdogOffMs);
         Span<byte> torque = stackalloc byte[c.ChannelSpan];
         foreach (var m in c.MotorArray)
         {
@@ -26,7 +30,12 @@ internal sealed class ModuleArming(RobotLayout layout, BusClient client, ModuleR
 
         // Torque first, then the watchdog: a stall between the two writes must not trip a watchdog that refuses the torque.
         var t = client.Write(c.Id, layout.TorqueAddress, torque, BusRobot.InsistingRetries); // idempotent writes
-        var w = client.Write(c.Id, layout.WatchdogAddress, watchdog, BusRobot.InsistingRetries);
+        var w = on ? client.Write(c.Id, layout.WatchdogOffAddress, watchdogOff, BusRobot.InsistingRetries) : t;
+        if (!on || w.Succeeded)
+        {
+            w = client.Write(c.Id, layout.WatchdogAddress, watchdog, BusRobot.InsistingRetries);
+        }
+
         c.BusWatchdogMs = -1; // known again when the next status poll reads it back
         if (!w.Succeeded || !t.Succeeded)
         {

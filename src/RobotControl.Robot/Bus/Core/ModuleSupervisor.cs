@@ -12,14 +12,22 @@ namespace RobotControl.Robot.Bus;
 /// <see cref="BusRobotOptions.PotPollCycles"/>; one module's per-motor detail (torque read back, motor errors) every
 /// <see cref="BusRobotOptions.DetailPollCycles"/>, in turn; a search for missing modules every
 /// <see cref="BusRobotOptions.ReprobeCycles"/>. Resets re-arm a module that was driven; latched errors and tripped
-/// watchdogs put the robot in its fault state. Written by the bus thread alone; what it finds is published on the
-/// controllers and motors and in the event stream.
+/// watchdogs put the robot in its fault state; a bus hold (the watchdog's first stage) is counted
+/// (<see cref="Holding"/>) and reported, and acknowledged only when asked (<see cref="AcknowledgeHold"/>). Written by
+/// the bus thread alone; what it finds is published on the controllers and motors and in the event stream.
 /// </summary>
 [WrittenBy(RobotThread.Bus)]
 internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, ModuleRoster roster, BusRobotOptions options, RobotEventStream events, RobotFaultFlags faults, RobotLifecycle life, ModuleArming arming)
 {
+    /// <summary>The latched bits a hold's acknowledgement may clear along with it (the poll acknowledges the other two itself).</summary>
+    private static readonly HardwareErrors Acknowledgeable = HardwareErrors.BusHold | HardwareErrors.OverCurrent | HardwareErrors.PositionLost;
+
     private readonly byte[] _detail = new byte[layout.Controllers.Max(c => c.ChannelSpan)];
     private int _detailNext;
+    private int _holding;
+
+    /// <summary>Present modules whose status, as last read, shows a bus hold (any thread reads it).</summary>
+    public int Holding => Volatile.Read(ref _holding);
 
     /// <summary>The module work of cycle <paramref name="cycle"/> (after the feedback is published).</summary>
     public void AfterPublish(long cycle, bool alert)
@@ -67,7 +75,28 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
         }
 
         faults.ClearLatched();
+        CountHolds();
         life.LeaveFault("faults cleared");
+    }
+
+    /// <summary>
+    /// Acknowledges module <paramref name="c"/>'s bus hold (bus thread, at a write, before its goals) if its status shows
+    /// one and nothing else latched but over-current or position lost: <c>hardware_error_status</c> 0, and it follows
+    /// the goals again. A module with another latched error keeps holding until faults are cleared
+    /// (<see cref="ClearInModules"/>), so an acknowledgement never wipes a fault. True when acknowledged.
+    /// </summary>
+    public bool AcknowledgeHold(RobotController c)
+    {
+        var status = (HardwareErrors)c.HardwareErrorStatus;
+        if (!status.HasAny(HardwareErrors.BusHold) || !(status & ~Acknowledgeable).IsNone || !client.Write(c.Id, layout.StatusAddress, [0]).Succeeded)
+        {
+            return false;
+        }
+
+        c.HardwareErrorStatus = 0;
+        events.Publish(new HoldAcknowledged(c.Id, c.Name));
+        CountHolds();
+        return true;
     }
 
     /// <summary>A module's reset cause from before the host connected is history, not a fault: note it and clear it.</summary>
@@ -87,6 +116,8 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
                 _ = client.Write(c.Id, layout.ResetCauseAddress, [0]);
             }
         }
+
+        CountHolds();
     }
 
     private void PollStatus()
@@ -104,7 +135,12 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
             var at = RobotLayout.StatusPollLength * i;
             var status = (HardwareErrors)active.StatusData[at];
             var cause = active.StatusData[at + 1];
+            var held = c.BusHold;
             c.HardwareErrorStatus = status.Value;
+            if (c.BusHold && !held)
+            {
+                events.Publish(new ModuleHolding(c.Id, c.Name));
+            }
             c.BusWatchdogMs = BinaryPrimitives.ReadUInt16LittleEndian(active.StatusData.AsSpan(at + 2, 2)); // before a reset re-arms it
             if (cause != 0)
             {
@@ -137,6 +173,19 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
                 }
             }
         }
+
+        CountHolds();
+    }
+
+    private void CountHolds()
+    {
+        var n = 0;
+        foreach (var c in roster.Active.Controllers)
+        {
+            n += c.BusHold ? 1 : 0;
+        }
+
+        Volatile.Write(ref _holding, n);
     }
 
     private void HandleReset(RobotController c, byte cause, HardwareErrors status)

@@ -24,6 +24,7 @@ internal sealed class RobotLayout
         KinematicActuator = [.. Map.Actuators.Select(a => IndexOf(robot, a))];
         ToolActuator = Map.ToolActuator is { } tool ? IndexOf(robot, tool) : -1;
         WatchdogMs = robot.Modules.WatchdogMs;
+        WatchdogOffMs = robot.Modules.WatchdogOffMs;
 
         var controllers = new List<RobotController>();
         var motors = new List<RobotMotor>();
@@ -70,6 +71,7 @@ internal sealed class RobotLayout
         PotLength = ((maxChannels - 1) * pot.Stride) + pot.Size;
         ResetCauseAddress = Table["reset_cause"].At(0);
         WatchdogAddress = Table["bus_watchdog"].At(0);
+        WatchdogOffAddress = Table["bus_watchdog_off"].At(0);
         TorqueAddress = Table["torque_enable"].At(0);
         ResetCauses = Table.Codes("reset_cause");
         if (ResetCauseAddress != StatusAddress + 1 || WatchdogAddress != StatusAddress + 2 || Table["bus_watchdog"].Size != StatusPollLength - 2)
@@ -101,7 +103,11 @@ internal sealed class RobotLayout
 
     public int JointCount => Definition.JointCount;
 
+    /// <summary>The bus watchdog's stage 1 (the modules hold), ms: the robot file's <c>modules.watchdog_ms</c>.</summary>
     public int WatchdogMs { get; }
+
+    /// <summary>The bus watchdog's stage 2 (the modules switch their motors off), ms: <c>modules.watchdog_off_ms</c>.</summary>
+    public int WatchdogOffMs { get; }
 
     public ushort GoalAddress { get; }
 
@@ -131,6 +137,8 @@ internal sealed class RobotLayout
     public ushort ResetCauseAddress { get; }
 
     public ushort WatchdogAddress { get; }
+
+    public ushort WatchdogOffAddress { get; }
 
     public ushort TorqueAddress { get; }
 
