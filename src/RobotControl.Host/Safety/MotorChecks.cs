@@ -58,6 +58,18 @@ internal sealed class MotorChecks
         }
     }
 
+    /// <summary>
+    /// Takes <paramref name="gap"/> ticks of a host stall (its part beyond the stall limit) out of how long each motor
+    /// has been beyond a limit: nothing was observed meanwhile, so a condition seen just before a long stall must
+    /// persist for its time after it again; a cycle only slightly late (a bus slowed by timeouts) still counts nearly whole.
+    /// </summary>
+    public void Discount(long gap)
+    {
+        Discount(_trackingSince, gap);
+        Discount(_currentSince, gap);
+        Discount(_potSince, gap);
+    }
+
     /// <summary>Forgets how long each motor has been beyond a limit (an operator's reset).</summary>
     public void Clear()
     {
@@ -82,9 +94,10 @@ internal sealed class MotorChecks
         var limit = _limits.CurrentLimitFraction * m.CurrentLimitA;
         Persist(ref _currentSince[i], Math.Abs(current) > limit, now, _currentTicks, SafetyCheck.OverCurrent, i, Math.Abs(current), limit, "A");
 
-        // Pot against encoder once the positions are trusted (after homing); the pot is read at the pot poll's rate.
+        // Pot against encoder once the positions are trusted (after homing); the pot is read at the pot poll's rate, and
+        // compared with the encoder position of the same poll.
         var pot = m.PotPositionRad;
-        var distance = Math.Abs(pot - position);
+        var distance = Math.Abs(pot - m.PositionAtPotRad); // both sampled at the pot poll: a moving joint's pot is not a poll behind
         Persist(ref _potSince[i], homed && double.IsFinite(pot) && distance > _potLimit[i], now, _potTicks, SafetyCheck.PotMismatch, i, distance, _potLimit[i], "rad");
     }
 
@@ -104,6 +117,17 @@ internal sealed class MotorChecks
         if (now - since >= allowed)
         {
             _trip(check, _names[motor], measured, limit, unit, now);
+        }
+    }
+
+    private static void Discount(long[] since, long gap)
+    {
+        for (var i = 0; i < since.Length; i++)
+        {
+            if (since[i] != 0)
+            {
+                since[i] += gap;
+            }
         }
     }
 }

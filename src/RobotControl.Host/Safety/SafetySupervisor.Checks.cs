@@ -74,6 +74,9 @@ public sealed partial class SafetySupervisor
         Volatile.Write(ref _lastCycle, Level is RunLevel.PedalUp or RunLevel.PedalDown ? now : 0); // read by TeleopAllowed on the loop's thread
         if (gap > _stallTicks)
         {
+            // What persisted across the stall was not observed beyond the stall limit: that part does not count. (A module's
+            // silence does: a cycle slowed by a silent module's timeouts is a gap too, and the silence is real.)
+            _motorChecks.Discount(gap - _stallTicks);
             Trip(SafetyCheck.HostStall, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
         }
     }

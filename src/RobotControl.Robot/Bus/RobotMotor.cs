@@ -16,6 +16,7 @@ public sealed class RobotMotor
     private double _current;
     private double _manualSetpoint = double.NaN;
     private double _potPosition = double.NaN;
+    private double _positionAtPot = double.NaN;
     private double _jogRate;
     private int _manual;
     private int _holdRequested;
@@ -145,10 +146,17 @@ public sealed class RobotMotor
     /// </summary>
     public double PotPositionRad => Volatile.Read(ref _potPosition);
 
+    /// <summary>
+    /// The encoder position published when the pot was last read (<see cref="PotPositionRad"/>), output radians: the
+    /// pot/encoder check compares readings of one instant, not a pot reading a poll old against a moving encoder.
+    /// </summary>
+    public double PositionAtPotRad => Volatile.Read(ref _positionAtPot);
+
     internal void PublishPot(int raw)
     {
         if (_potCalibration.IsCalibrated)
         {
+            Volatile.Write(ref _positionAtPot, Volatile.Read(ref _position));
             Volatile.Write(ref _potPosition, Config.ToRadians(_potCalibration.PositionAt(raw)));
         }
     }
