@@ -70,6 +70,19 @@ internal sealed class MotorChecks
         Discount(_potSince, gap);
     }
 
+    /// <summary>Motors whose pot does not confirm the encoder position read with it (no reading, or beyond the pot limit).</summary>
+    public int PotsNotConfirming()
+    {
+        var count = 0;
+        for (var i = 0; i < _motors.Length; i++)
+        {
+            var distance = Math.Abs(_motors[i].PotPositionRad - _motors[i].PositionAtPotRad);
+            count += distance <= _potLimit[i] ? 0 : 1; // NaN (no reading) does not confirm
+        }
+
+        return count;
+    }
+
     /// <summary>Forgets how long each motor has been beyond a limit (an operator's reset).</summary>
     public void Clear()
     {

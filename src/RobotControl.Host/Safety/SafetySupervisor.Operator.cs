@@ -15,9 +15,10 @@ namespace RobotControl.Host.Safety;
 public sealed partial class SafetySupervisor
 {
     /// <summary>
-    /// INIT -> HOMING -> PEDAL_UP: motors off; homed from the pots and verified where positions may be lost (always
-    /// after a <see cref="Reset"/>; otherwise when a motor's module reports position lost or a pot mismatch); motors
-    /// on, holding the measured positions. Homing that does not verify every motor returns to INIT.
+    /// INIT -> HOMING -> PEDAL_UP: motors off; homed from the pots and verified where positions may be lost (after a
+    /// <see cref="Reset"/>, unless only silences caused the E-STOP and every pot confirms its motor's position;
+    /// otherwise when a motor's module reports position lost or a pot mismatch); motors on, holding the measured
+    /// positions. Homing that does not verify every motor returns to INIT.
     /// </summary>
     /// <exception cref="InvalidOperationException">Not at INIT, or homing incomplete (the message says how many motors failed).</exception>
     public IReadOnlyList<HomingResult> Home(string source) => _robot.Slot.Run($"homing ({source})", () => HomeOnBus(source));
@@ -40,13 +41,17 @@ public sealed partial class SafetySupervisor
             _robot.EnableTorque(false);
         }
 
-        var lost = _mustRehome ? _motorChecks.Count : PositionsInDoubt();
+        var byPots = _confirmByPots;
+        _confirmByPots = false;
+        var lost = _mustRehome ? _motorChecks.Count : byPots ? Math.Max(PositionsInDoubt(), _motorChecks.PotsNotConfirming()) : PositionsInDoubt();
         if (lost == 0)
         {
             _robot.HoldAtMeasured();
             _robot.EnableTorque(true);
             _torqueOffTaken = false;
-            _levels.MoveTo(RunLevel.PedalUp, source, $"no module reports a lost position or a pot mismatch: not re-homed; motors on, holding");
+            _levels.MoveTo(RunLevel.PedalUp, source, byPots
+                ? "after an E-STOP from a stall, the pots confirm every position: not re-homed; motors on, holding"
+                : "no module reports a lost position or a pot mismatch: not re-homed; motors on, holding");
             return [];
         }
 
@@ -194,8 +199,12 @@ public sealed partial class SafetySupervisor
             _robot.EnableTorque(false);
         }
 
-        _robot.ClearFaults();
-        _mustRehome = true;
+        // After an E-STOP that only silences caused (a host stall past the modules' torque-off stage, the modules' own
+        // watchdog), with no module reporting a lost position, the pots may confirm the positions instead of homing.
+        var silencesOnly = Trips.Where(t => !t.Soft).All(t => t.Check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent or SafetyCheck.ModuleFault);
+        _confirmByPots = silencesOnly && PositionsInDoubt() == 0;
+        _mustRehome = !_confirmByPots;
+        _robot.ClearFaultsNow(); // before anything else may ask for motors on
         lock (_tripGate)
         {
             Array.Clear(_tripped);

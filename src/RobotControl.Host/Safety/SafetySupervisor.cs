@@ -15,10 +15,11 @@ namespace RobotControl.Host.Safety;
 /// <see cref="RunLevel.PedalDown"/> the robot holds (goals frozen at the measured positions: teleoperation is
 /// ignored); every goal is under the robot layer's step cap. A trip records what crossed which limit, puts the robot
 /// in the check's safe state (<see cref="SafetyLimits.SafeStateOf"/>) and moves to <see cref="RunLevel.EStop"/>;
-/// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again. The master
-/// timeout (input device data older than its limit, as the graph reports it through <see cref="IOperatorPort"/>) is the one soft trip that,
-/// with its default safe state hold, goes back to <see cref="RunLevel.PedalUp"/> instead (as the Raven-II's
-/// master-data timeout forces pedal-up): the operator may press the pedal again once the data is fresh. When the graph
+/// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again (unless only
+/// silences caused it and the pots confirm every position). Soft trips go back to <see cref="RunLevel.PedalUp"/>
+/// instead, as the Raven-II's master-data timeout forces pedal-up: a host stall, a loop behind or a silent module
+/// shorter than the modules' torque-off stage, the master timeout and a master jump, each with its safe state hold
+/// (<see cref="Trip"/> grades them); the operator presses the pedal again once the robot is ready. When the graph
 /// wires a pedal to the robot node (<see cref="ReportPedal"/>), PEDAL_UP and PEDAL_DOWN follow it (a press moves
 /// to PEDAL_DOWN only from PEDAL_UP, so after a timeout or a trip the operator lifts and presses again); an
 /// emergency-stop pedal or button (<see cref="ReportEmergencyStop"/>) trips E-STOP when pressed.
@@ -54,6 +55,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private long _jumpsSeen;
     private volatile bool _torqueOffTaken;
     private bool _mustRehome;
+    private bool _confirmByPots;
     private OperatorPedal _lastPedal;
     private OperatorPedal _lastEmergencyStop;
     private EmergencyStopRequest? _stopRequest;

@@ -203,6 +203,13 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     public void ClearFaults() => _goals.RequestClear();
 
     /// <summary>
+    /// Clears latched faults here and in the modules now, as <see cref="ClearFaults"/> does at the next write (on the
+    /// bus's owner: queued between cycles when called from another thread): an operator's reset, so that what comes
+    /// next (homing, motors on) finds the modules cleared.
+    /// </summary>
+    public void ClearFaultsNow() => Slot.Run("clear faults", _modules.ClearInModules);
+
+    /// <summary>
     /// Acknowledges the modules' bus holds (<see cref="ModulesHolding"/>) at the next write, on the bus thread, before that
     /// write's goals (any thread, lock-free): each holding module gets <c>hardware_error_status</c> 0 and follows the goals
     /// from then on, its motors' step cap starting from where they held (the goals sent during the hold were refused);

@@ -114,4 +114,25 @@ public sealed class HostStallTests
         supervisor.PedalDown("pedal");
         Assert.Equal(RunLevel.PedalDown, supervisor.Level);
     }
+
+    [Fact]
+    public void After_an_e_stop_from_a_stall_past_the_torque_off_stage_a_reset_needs_no_re_homing_when_the_pots_confirm_every_position()
+    {
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
+        var supervisor = session.Supervisor;
+        supervisor.PedalDown("pedal");
+        session.RunVirtual(300);
+        session.Simulation!.Advance(TimeSpan.FromMilliseconds(600)); // the host stops; the modules hold at 30 ms and switch off at 500
+        session.RunVirtual(400);
+        var stall = supervisor.Trips.First(t => t.Check == SafetyCheck.HostStall);
+        Assert.Equal((false, SafeState.TorqueOff), (stall.Soft, stall.Action));
+        Assert.Equal(RunLevel.EStop, supervisor.Level);
+
+        supervisor.Reset("operator");
+        var homed = supervisor.Home("operator");
+
+        Assert.Empty(homed); // not re-homed: the pots confirmed every motor
+        Assert.Equal(RunLevel.PedalUp, supervisor.Level);
+        Assert.StartsWith("after an E-STOP from a stall, the pots confirm every position", supervisor.History[^1].Reason, StringComparison.Ordinal);
+    }
 }
