@@ -99,10 +99,7 @@ public sealed partial class SafetySupervisor
             throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: module {silent.Module} has not answered for {silent.Ms:0.#} ms (module_silent_ms {Limits.ModuleSilentMs:0.#})"));
         }
 
-        lock (_tripGate)
-        {
-            Array.Clear(_softTripped); // a new episode of teleoperation: a new timeout, jump or silence is a new trip
-        }
+        _trips.NewEpisode(); // a new episode of teleoperation: a new timeout, jump or silence is a new trip
 
         if (_robot.ModulesHolding > 0)
         {
@@ -205,11 +202,7 @@ public sealed partial class SafetySupervisor
         _confirmByPots = silencesOnly && PositionsInDoubt() == 0;
         _mustRehome = !_confirmByPots;
         _robot.ClearFaultsNow(); // before anything else may ask for motors on
-        lock (_tripGate)
-        {
-            Array.Clear(_tripped);
-            Array.Clear(_softTripped);
-        }
+        _trips.Reset();
 
         _motorChecks.Clear();
         _levels.MoveTo(RunLevel.Init, source, "operator reset: motors off, faults cleared; homing needed before motion");

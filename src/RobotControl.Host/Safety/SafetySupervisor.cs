@@ -39,14 +39,11 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private readonly BusRobot _robot;
     private readonly TimeProvider _time;
     private readonly StateMachine<RunLevel> _levels;
-    private readonly List<SafetyTrip> _trips = new(32);
-    private readonly Lock _tripGate = new();
+    private readonly TripLog _trips = new();
     private readonly RobotController[] _controllers;
     private readonly MotorChecks _motorChecks;
     private readonly ModuleChecks _moduleChecks;
     private readonly OperatorInputs _inputs;
-    private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
-    private readonly bool[] _softTripped = new bool[Enum.GetValues<SafetyCheck>().Length];
     private readonly SafeState[] _safeStates; // per check, looked up once: a trip's path does no dictionary lookup
     private readonly long _stallTicks;
     private readonly double _torqueOffStageMs;
@@ -105,16 +102,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     public IReadOnlyList<StateTransition<RunLevel>> History => _levels.History;
 
     /// <summary>Every trip, oldest first (a copy).</summary>
-    public IReadOnlyList<SafetyTrip> Trips
-    {
-        get
-        {
-            lock (_tripGate)
-            {
-                return [.. _trips];
-            }
-        }
-    }
+    public IReadOnlyList<SafetyTrip> Trips => _trips.All;
 
     /// <summary>The robot layer supervised.</summary>
     public BusRobot Robot => _robot;
@@ -153,15 +141,9 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
             return;
         }
 
-        lock (_tripGate)
+        if (!_trips.TryRecord(now, check, joint, measured, limit, unit, action))
         {
-            if (_tripped[(int)check])
-            {
-                return;
-            }
-
-            _tripped[(int)check] = true;
-            _trips.Add(new SafetyTrip(now, check, joint, measured, limit, unit, action));
+            return;
         }
 
         var torqueOff = action == SafeState.TorqueOff && !_torqueOffTaken;
@@ -183,17 +165,9 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     /// </summary>
     private void SoftTrip(SafetyCheck check, string joint, double measured, double limit, string unit, long now)
     {
-        SafetyTrip trip;
-        lock (_tripGate)
+        if (_trips.TryRecordSoft(now, check, joint, measured, limit, unit) is not { } trip)
         {
-            if (_softTripped[(int)check])
-            {
-                return; // nothing allocated while the same episode goes on
-            }
-
-            _softTripped[(int)check] = true;
-            trip = new SafetyTrip(now, check, joint, measured, limit, unit, SafeState.Hold, Soft: true);
-            _trips.Add(trip);
+            return;
         }
 
         _robot.HoldAtSent(); // where the arms were going: re-engaging from the setpoints of before the trip cannot step
