@@ -15,12 +15,14 @@ public sealed class VirtualLb : IDisposable
     /// <summary>
     /// A virtual LB (<paramref name="options"/>) and the robot layer on it as <paramref name="hostView"/> describes it
     /// (default: the LB's file), with <paramref name="robotOptions"/>; <paramref name="link"/> puts something between
-    /// the host and the virtual bus (it gets the virtual link). With <paramref name="start"/>, discovered and motors on.
+    /// the host and the virtual bus (it gets the virtual link); the clock starts at <paramref name="clockAt"/> (default 0).
+    /// With <paramref name="start"/>, discovered and motors on.
     /// </summary>
-    public VirtualLb(VirtualRobotOptions? options = null, RobotDefinition? hostView = null, bool start = true, BusRobotOptions? robotOptions = null, Func<IByteLink, IByteLink>? link = null)
+    public VirtualLb(VirtualRobotOptions? options = null, RobotDefinition? hostView = null, bool start = true, BusRobotOptions? robotOptions = null, Func<IByteLink, IByteLink>? link = null, TimeSpan clockAt = default)
     {
         Definition = ShippedRobots.Lb;
         Clock = new ManualTimeProvider();
+        Clock.Advance(clockAt);
         Sim = new VirtualRobot(Definition, Clock, options);
         var hostLink = Sim.OpenLink();
         Robot = new BusRobot(hostView ?? Definition, new BusClient(link is null ? hostLink : link(hostLink), Clock), robotOptions);

@@ -57,6 +57,7 @@ public sealed class BetweenCyclesOwnershipTests
             robot.RunFor(TimeSpan.FromMilliseconds(5));
             Assert.InRange(rig.Clock.Elapsed - before, TimeSpan.FromMilliseconds(5), TimeSpan.FromMilliseconds(5.01));
             Assert.True(slot.IsOwner);
+            Assert.Equal(0, robot.Cycles); // nothing to cycle with
             Assert.True(queued.IsCompletedSuccessfully);
             Assert.Equal(7, await queued); // completed: no thread switch
             Assert.Equal(0, slot.Pending);

@@ -43,50 +43,18 @@ public sealed class BusRobotFacadeTests
     }
 
     [Fact]
-    public void Set_up_called_from_another_thread_runs_on_the_bus_thread_one_piece_at_a_time()
-    {
-        using var rig = new TappedLb(start: false);
-        var robot = rig.Robot;
-        var elbow = robot.Motor("right.elbow");
-        robot.Start();
-        try
-        {
-            var ran = robot.Slot.Ran;
-            Assert.True(robot.Discover().AllAsConfigured);
-            Assert.Empty(robot.CheckParameters());
-            var kp = robot.ReadParameter(2, "kp", 0);
-            Assert.Equal(kp, robot.WriteParameter(2, "kp", 0, kp));
-            Assert.True(robot.WriteParameters() > 0);
-            Assert.All(robot.Home(), r => Assert.True(r.Succeeded, r.ToString()));
-            Assert.True(robot.HomeMotor(elbow).Succeeded);
-            Assert.True(robot.Reboot(3).Succeeded);
-            robot.EnableTorque(true);
-            robot.EnableTorque(false);
-            Assert.Equal(ran + 10, robot.Slot.Ran); // each one a piece of work between cycles
-            Assert.Equal(RobotState.Homed, robot.State);
-        }
-        finally
-        {
-            robot.Stop();
-        }
-    }
-
-    [Fact]
     public void Every_cycle_runs_the_check_once_and_so_does_a_failed_one()
     {
         using var rig = new TappedLb();
         var robot = rig.Robot;
-        using var events = robot.Events.Subscribe();
-        var checks = 0;
-        robot.CycleCheck = new CountingCheck(() => checks++);
         rig.Cycles(5);
-        Assert.Equal(5, checks);
+        Assert.Equal(5, rig.Checks);
 
         robot.CycleFailed(new IOException("link gone"), report: true, leftOut: 0);
         robot.CycleFailed(new IOException("link gone"), report: false, leftOut: 0);
         robot.CycleFailed(new IOException("link gone"), report: true, leftOut: 41);
-        Assert.Equal(8, checks);
-        Assert.Equal(["bus error: link gone", "bus error: link gone (41 more failed cycles since the last report)"], events.ReadAll().OfType<BusError>().Select(e => e.Message));
+        Assert.Equal(8, rig.Checks);
+        Assert.Equal(["bus error: link gone", "bus error: link gone (41 more failed cycles since the last report)"], rig.Events<BusError>().Select(e => e.Message));
         Assert.True(robot.Faults.HasFlag(RobotFaults.BusDegraded));
         Assert.All(robot.Controllers, c => Assert.Equal(3, c.MissedReplies));
     }
@@ -139,12 +107,32 @@ public sealed class BusRobotFacadeTests
         rig.Cycles(3);
         var goals = robot.Motors.Select(robot.SentGoalRad).ToArray();
 
+        robot.HoldPosition();
         robot.WriteJawSetpoint(0, robot.Map.JawMaxRad);
         robot.WriteJawSetpoint(1, robot.Map.JawMinRad);
-        robot.HoldPosition();
         rig.Cycles(10);
 
         Assert.Equal(goals, robot.Motors.Select(robot.SentGoalRad));
+    }
+
+    [Fact]
+    public void A_robot_file_that_lists_the_jaw_drive_first_still_drives_the_jaws()
+    {
+        var view = VirtualLb.EditedLb(json =>
+        {
+            var actuators = json["actuators"]!.AsArray();
+            var jaw = actuators.Single(a => (string)a!["name"]! == "tool_open_close")!;
+            actuators.Remove(jaw);
+            actuators.Insert(0, jaw);
+        });
+        using var rig = new TappedLb(hostView: view);
+        var robot = rig.Robot;
+        var jaw = robot.Motor("right.tool_open_close");
+        var target = jaw.PositionRad + (5 * Math.PI / 180);
+        robot.WriteJawSetpoint(0, target);
+        rig.Cycles(300);
+        Assert.Equal(target, robot.SentGoalRad(jaw));
+        Assert.InRange(jaw.PositionRad - target, -0.01, 0.01);
     }
 
     [Fact]
@@ -159,10 +147,5 @@ public sealed class BusRobotFacadeTests
 
         Assert.False(robot.IsRunning);
         Assert.True(rig.Tap.Disposed);
-    }
-
-    private sealed class CountingCheck(Action check) : ICycleCheck
-    {
-        public void Check() => check();
     }
 }

@@ -21,7 +21,6 @@ public sealed class FeedbackExchangeTests
     {
         using var rig = new TappedLb(options: new BusRobotOptions { MissingAfterCycles = 4 });
         var robot = rig.Robot;
-        using var events = robot.Events.Subscribe();
         rig.Cycles(3);
         var module = robot.Controller(12)!;
 
@@ -40,7 +39,7 @@ public sealed class FeedbackExchangeTests
         Assert.True(robot.Faults.HasFlag(RobotFaults.ModuleMissing));
         rig.Cycles(6);
         Assert.Equal(10, module.MissedReplies);
-        Assert.Equal([new ModuleStoppedAnswering(12, "left upper arm")], events.ReadAll().OfType<ModuleStoppedAnswering>());
+        Assert.Equal([new ModuleStoppedAnswering(12, "left upper arm")], rig.Events<ModuleStoppedAnswering>());
         Assert.All(robot.Controllers.Where(c => c.Id != 12), c => Assert.Equal((true, 0), (c.Present, c.MissedReplies)));
     }
 
@@ -49,7 +48,6 @@ public sealed class FeedbackExchangeTests
     {
         using var rig = new TappedLb();
         var robot = rig.Robot;
-        using var events = robot.Events.Subscribe();
         rig.Cycles(3);
 
         rig.Tap.Deaf = true; // three cycles without a reply from anyone: each module misses the default three
@@ -60,7 +58,7 @@ public sealed class FeedbackExchangeTests
         rig.Tap.Deaf = false;
         robot.RunCycle();
         Assert.All(robot.Controllers, c => Assert.Equal((true, 0), (c.Present, c.MissedReplies)));
-        Assert.Equal(robot.Controllers.Select(c => c.Id).Order(), events.ReadAll().OfType<ModuleAnswersAgain>().Select(e => e.ModuleId).Order());
+        Assert.Equal(robot.Controllers.Select(c => c.Id).Order(), rig.Events<ModuleAnswersAgain>().Select(e => e.ModuleId).Order());
         Assert.Equal(RobotFaults.None, robot.Faults & (RobotFaults.ModuleMissing | RobotFaults.BusDegraded));
     }
 
@@ -69,11 +67,7 @@ public sealed class FeedbackExchangeTests
     {
         using var rig = new TappedLb();
         var robot = rig.Robot;
-        var elbow = rig.Sim.Axis(1, "elbow");
-        elbow.ObstacleTorqueNm = 5;
-        var setpoint = robot.Definition.Joints.Select(j => j.MidRad).ToArray();
-        setpoint[3] += 20 * Deg;
-        robot.WriteJointSetpoints(1, setpoint);
+        rig.StallElbow(1, 20 * Deg);
         robot.RunFor(TimeSpan.FromMilliseconds(200));
 
         var actuators = robot.Definition.Actuators;
@@ -152,7 +146,7 @@ public sealed class FeedbackExchangeTests
         Assert.Equal(2, Polls()); // cycles 5 and 10
 
         // The watchdogs trip while the host is silent: the next replies carry the alert, so the poll comes at once.
-        rig.Sim.Advance(TimeSpan.FromMilliseconds(rig.Lb.Definition.Modules.WatchdogMs + 10));
+        rig.SilenceBeyondTheWatchdog();
         rig.Cycles(1); // cycle 15: a scheduled poll as well
         rig.Cycles(1); // cycle 16
         Assert.True(robot.Faults.HasFlag(RobotFaults.WatchdogTripped));
@@ -168,16 +162,15 @@ public sealed class FeedbackExchangeTests
     {
         using var rig = new TappedLb(options: new BusRobotOptions { StatusPollCycles = 1000, ReprobeCycles = 1000 });
         var robot = rig.Robot;
-        using var events = robot.Events.Subscribe();
         rig.Cycles(3);
         Assert.Equal(RobotFaults.None, robot.Faults);
 
-        rig.Sim.Advance(TimeSpan.FromMilliseconds(rig.Lb.Definition.Modules.WatchdogMs + 10));
+        rig.SilenceBeyondTheWatchdog();
         rig.Cycles(2);
 
         Assert.True(robot.Faults.HasFlag(RobotFaults.WatchdogTripped));
         Assert.Equal(RobotState.Fault, robot.State);
-        var tripped = Assert.Single(events.ReadAll().OfType<WatchdogTripped>()); // one event, however many modules tripped
+        var tripped = Assert.Single(rig.Events<WatchdogTripped>()); // one event, however many modules tripped
         Assert.Equal((byte)1, tripped.ModuleId);
     }
 }

@@ -195,6 +195,20 @@ public sealed class GoalWriterTests
     }
 
     [Fact]
+    public void A_jog_started_before_the_first_write_starts_from_the_position()
+    {
+        using var rig = new TappedLb(); // discovered, motors on, nothing written yet
+        var robot = rig.Robot;
+        var roll = robot.Motor("right.tool_roll");
+        var at = roll.PositionRad;
+        roll.Jog(0.5);
+        robot.RunCycle(); // no time has passed since a write: the jog has not moved the goal yet
+        Assert.Equal(at, robot.SentGoalRad(roll));
+        robot.RunCycle();
+        Assert.True(robot.SentGoalRad(roll) > at);
+    }
+
+    [Fact]
     public void A_manual_setpoint_drives_its_motor_while_the_others_hold_and_turning_on_releases_it()
     {
         using var rig = new TappedLb();
@@ -212,14 +226,22 @@ public sealed class GoalWriterTests
     }
 
     [Fact]
-    public void An_emergency_hold_with_torque_off_turns_the_motors_off_at_the_next_write()
+    public void An_emergency_hold_holds_at_the_next_write_and_with_torque_off_turns_the_motors_off()
     {
         using var rig = new TappedLb();
         var robot = rig.Robot;
         rig.Cycles(3);
 
-        robot.EmergencyHold("test stop", torqueOff: true);
+        robot.EmergencyHold("first stop", torqueOff: false);
         Assert.True(robot.StopPending);
+        rig.Cycles(2);
+        Assert.False(robot.StopPending);
+        Assert.True(robot.IsHolding);
+        Assert.Equal(RobotState.Enabled, robot.State);
+        Assert.All(rig.Sim.Axes, a => Assert.True(a.DriverEnabled));
+
+        robot.ReleaseHold();
+        robot.EmergencyHold("test stop", torqueOff: true);
         Assert.Equal(RobotState.Enabled, robot.State); // requests are taken at the next write
         robot.Write();
 
@@ -231,21 +253,6 @@ public sealed class GoalWriterTests
         rig.Sim.Advance(TimeSpan.FromMilliseconds(1));
         Assert.All(rig.Sim.Axes, a => Assert.False(a.DriverEnabled, $"{a.Config.FullName} still driven"));
         Assert.All(robot.Controllers, c => Assert.Equal(0, robot.ReadParameter(c.Id, "bus_watchdog")));
-    }
-
-    [Fact]
-    public void An_emergency_hold_without_torque_off_keeps_the_motors_on_and_holding()
-    {
-        using var rig = new TappedLb();
-        var robot = rig.Robot;
-        rig.Cycles(3);
-
-        robot.EmergencyHold("test stop", torqueOff: false);
-        rig.Cycles(2);
-
-        Assert.True(robot.IsHolding);
-        Assert.Equal(RobotState.Enabled, robot.State);
-        Assert.All(rig.Sim.Axes, a => Assert.True(a.DriverEnabled));
     }
 
     [Fact]

@@ -34,7 +34,7 @@ public sealed class ModuleArmingTests
         using var rig = new TappedLb();
         var robot = rig.Robot;
         rig.Cycles(3);
-        rig.Sim.Advance(TimeSpan.FromMilliseconds(rig.Lb.Definition.Modules.WatchdogMs + 10)); // tripped; the host has not looked yet
+        rig.SilenceBeyondTheWatchdog();
 
         var refused = Assert.Throws<IOException>(() => robot.EnableTorque(true));
         Assert.Contains("module 1 \"right shoulder\"", refused.Message, StringComparison.Ordinal);
@@ -46,7 +46,6 @@ public sealed class ModuleArmingTests
     {
         using var rig = new TappedLb();
         var robot = rig.Robot;
-        using var events = robot.Events.Subscribe();
         rig.Cycles(3);
 
         var torque = ControlTable.Firmware["torque_enable"].At(0);
@@ -54,7 +53,7 @@ public sealed class ModuleArmingTests
         var refused = Assert.Throws<IOException>(() => robot.EnableTorque(false));
 
         Assert.Contains("module 3 \"right forearm\"", refused.Message, StringComparison.Ordinal);
-        Assert.Equal(["module 3", "module 12"], events.ReadAll().OfType<TorqueRefused>().Select(e => e.Message[..(e.Message.IndexOf(' ', 7))]));
+        Assert.Equal(["module 3", "module 12"], rig.Events<TorqueRefused>().Select(e => e.Message[..(e.Message.IndexOf(' ', 7))]));
         Assert.Equal(RobotState.Discovered, robot.State);
         rig.Sim.Advance(TimeSpan.FromMilliseconds(1));
         Assert.All(rig.Sim.Axes, a => Assert.False(a.DriverEnabled)); // told, whatever they answered

@@ -1,3 +1,4 @@
+using System.Buffers.Binary;
 using RobotControl.Bus.Protocol;
 using RobotControl.Modules;
 using RobotControl.Robot.Bus;
@@ -28,6 +29,9 @@ public sealed class ModuleSupervisorTests
         Assert.All(robot.Motors, m => Assert.True(double.IsNaN(m.PotPositionRad)));
         robot.RunCycle(); // cycle 2: half-way through the period
         Assert.Equal(1, PotReads());
+        var read = rig.Tap.Sent.Single(f => f.Instruction == Instruction.SyncRead && f.Address == Table["pot_raw"].At(0));
+        Assert.Equal(6, BinaryPrimitives.ReadUInt16LittleEndian(read.Parameters.AsSpan(2))); // the pots of three channels, the widest module's
+        Assert.Equal([1, 2, 3, 11, 12, 13], read.Parameters[4..].Select(b => (int)b));
         rig.Cycles(9);
         Assert.Equal(3, PotReads()); // cycles 2, 6 and 10
 
@@ -87,7 +91,6 @@ public sealed class ModuleSupervisorTests
         using var rig = new TappedLb(options: new BusRobotOptions { ReprobeCycles = 10 }, beforeStart: tap => tap.Mute(12));
         var robot = rig.Robot;
         var module = robot.Controller(12)!;
-        using var events = robot.Events.Subscribe();
         Assert.Equal([12], rig.Discovery!.Missing.Select(c => (int)c.Id));
         rig.Tap.ClearSent();
         int Pings(byte id) => rig.Tap.Sent.Count(f => f.Instruction == Instruction.Ping && f.Id == id);
@@ -105,7 +108,7 @@ public sealed class ModuleSupervisorTests
         rig.Cycles(5); // cycle 30 finds it
         Assert.Equal(2 * perSearch + 1, Pings(12));
         Assert.True(module.Present);
-        Assert.Equal([new ModuleAnswersAgain(12, "left upper arm")], events.ReadAll().OfType<ModuleAnswersAgain>());
+        Assert.Equal([new ModuleAnswersAgain(12, "left upper arm")], rig.Events<ModuleAnswersAgain>());
         rig.Cycles(1);
         Assert.False(robot.Faults.HasFlag(RobotFaults.ModuleMissing));
         Assert.InRange(robot.Motor("left.elbow").PositionRad - rig.Sim.Axis(1, "elbow").OutputAngleRad, -1 * Deg, 1 * Deg);
@@ -126,9 +129,47 @@ public sealed class ModuleSupervisorTests
         rig.Sim.ScheduleReset(2, rig.Sim.Elapsed + TimeSpan.FromMilliseconds(1));
         rig.Robot.RunFor(TimeSpan.FromMilliseconds(50));
 
-        var reset = Assert.Single(rig.Robot.Events.History().OfType<ModuleResetEvent>());
+        var reset = Assert.Single(rig.Events<ModuleResetEvent>());
         Assert.Equal("cause 9", reset.Cause);
         Assert.Equal(9, rig.Robot.Controller(2)!.LastResetCause);
+    }
+
+    [Fact]
+    public void A_module_that_falls_silent_right_after_a_reset_is_not_reported_resetting_again()
+    {
+        using var rig = new TappedLb();
+        var robot = rig.Robot;
+        var module = robot.Controller(2)!;
+        rig.Sim.ScheduleReset(2, rig.Sim.Elapsed + TimeSpan.FromMilliseconds(1));
+        for (var i = 0; i < 100 && module.Resets == 0; i++)
+        {
+            robot.RunCycle();
+        }
+
+        Assert.Equal(1, module.Resets);
+        rig.Tap.Mute(2);
+        rig.Cycles(24); // three status polls that module 2 does not answer
+        Assert.Equal(1, module.Resets);
+        Assert.Single(rig.Events<ModuleResetEvent>());
+    }
+
+    [Fact]
+    public void A_module_whose_status_cannot_be_read_at_discovery_takes_no_other_modules_status()
+    {
+        var statusAddress = Table["hardware_error_status"].At(0);
+        using var rig = new TappedLb(start: false);
+        var robot = rig.Robot;
+        var shoulder = rig.Sim.Axis(0, "shoulder_1");
+        rig.Sim.TurnWhileOff(shoulder, shoulder.OutputAngleRad + (25 * Deg)); // module 1 starts with a pot mismatch
+        rig.Sim.Advance(TimeSpan.FromMilliseconds(2));
+        rig.Tap.Lose = f => f.IsRead(2, statusAddress);
+
+        robot.Discover();
+
+        Assert.True(((HardwareErrors)(long)robot.Controller(1)!.HardwareErrorStatus).HasAny(HardwareErrors.PotMismatch));
+        Assert.Equal(0, robot.Controller(2)!.HardwareErrorStatus);
+        Assert.DoesNotContain(rig.Tap.Sent, f => f.IsWrite(2, Table["reset_cause"].At(0)));
+        Assert.Contains(rig.Tap.Sent, f => f.IsWrite(1, Table["reset_cause"].At(0)));
     }
 
     [Fact]
@@ -157,8 +198,9 @@ public sealed class ModuleSupervisorTests
         rig.Sim.TurnWhileOff(elbow, elbow.OutputAngleRad + (25 * Deg)); // a power cycle: the module resumes a stale position
         robot.RunFor(TimeSpan.FromMilliseconds(50));
 
-        var reset = Assert.Single(robot.Events.History().OfType<ModuleResetEvent>());
+        var reset = Assert.Single(rig.Events<ModuleResetEvent>());
         Assert.True(reset.PotMismatch);
+        Assert.Empty(rig.Events<HardwareErrorLatched>()); // told once, as the reset
         Assert.True(robot.Faults.HasFlag(RobotFaults.HardwareError | RobotFaults.ModuleReset));
         Assert.Equal(RobotState.Fault, robot.State);
         Assert.Equal("module 2 \"right upper arm\" reset and its position disagrees with the pot", robot.StateHistory[^1].Reason);
@@ -181,10 +223,10 @@ public sealed class ModuleSupervisorTests
         Assert.Equal(0, robot.ReadParameter(2, "reset_cause")); // the reset before the host came is history, not news
         robot.RunFor(TimeSpan.FromMilliseconds(30));
 
-        var latched = Assert.Single(robot.Events.History().OfType<HardwareErrorLatched>());
+        var latched = Assert.Single(rig.Events<HardwareErrorLatched>());
         Assert.Equal((byte)2, latched.ModuleId);
         Assert.True(latched.Errors.HasAny(HardwareErrors.PotMismatch));
-        Assert.Empty(robot.Events.History().OfType<ModuleResetEvent>());
+        Assert.Empty(rig.Events<ModuleResetEvent>());
         Assert.True(robot.Faults.HasFlag(RobotFaults.HardwareError));
         Assert.Equal(RobotState.Fault, robot.State);
         Assert.Equal(($"module 2 \"right upper arm\": hardware error {latched.Errors}", "modules"), (robot.StateHistory[^1].Reason, robot.StateHistory[^1].Source));
@@ -200,11 +242,7 @@ public sealed class ModuleSupervisorTests
     {
         using var rig = new TappedLb(options: new BusRobotOptions { CurrentLimitedFraction = 10 }); // only the modules' bit says limited
         var robot = rig.Robot;
-        var elbow = rig.Sim.Axis(0, "elbow");
-        elbow.ObstacleTorqueNm = 5;
-        var setpoint = robot.Definition.Joints.Select(j => j.MidRad).ToArray();
-        setpoint[3] += 30 * Deg;
-        robot.WriteJointSetpoints(0, setpoint);
+        rig.StallElbow(0, 30 * Deg);
         var sawLimited = 0;
         for (var i = 0; i < 300; i++)
         {
@@ -224,9 +262,8 @@ public sealed class ModuleSupervisorTests
     {
         using var rig = new TappedLb();
         var robot = rig.Robot;
-        using var events = robot.Events.Subscribe();
         rig.Cycles(3);
-        rig.Sim.Advance(TimeSpan.FromMilliseconds(rig.Lb.Definition.Modules.WatchdogMs + 10));
+        rig.SilenceBeyondTheWatchdog();
         rig.Cycles(2);
         Assert.Equal(RobotState.Fault, robot.State);
 
@@ -235,7 +272,7 @@ public sealed class ModuleSupervisorTests
         robot.ClearFaults();
         robot.Write();
 
-        var refused = Assert.Single(events.ReadAll().OfType<TorqueRefused>());
+        var refused = Assert.Single(rig.Events<TorqueRefused>());
         Assert.Contains("module 13", refused.Message, StringComparison.Ordinal);
         Assert.Contains("watchdog error is latched", refused.Message, StringComparison.Ordinal);
         Assert.Equal(RobotState.Enabled, robot.State);

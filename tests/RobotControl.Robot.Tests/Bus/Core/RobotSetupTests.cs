@@ -72,7 +72,7 @@ public sealed class RobotSetupTests
         Assert.False(rig.Robot.Controller(3)!.Present);
         Assert.Equal(1234, rig.Robot.Controller(3)!.ModelNumber);
         Assert.True(rig.Robot.Faults.HasFlag(RobotFaults.ModuleMissing));
-        Assert.Contains(rig.Robot.Events.History().OfType<DiscoveryProblemEvent>(), e => e.Problem.Kind == DiscoveryProblemKind.Mismatched);
+        Assert.Contains(rig.Events<DiscoveryProblemEvent>(), e => e.Problem.Kind == DiscoveryProblemKind.Mismatched);
     }
 
     [Fact]
@@ -123,7 +123,7 @@ public sealed class RobotSetupTests
         robot.EnableTorque(false);
         Assert.True(robot.Reboot(2).Succeeded);
         robot.RunFor(TimeSpan.FromMilliseconds(50));
-        var reset = Assert.Single(robot.Events.History().OfType<ModuleResetEvent>());
+        var reset = Assert.Single(rig.Events<ModuleResetEvent>());
         Assert.Equal((byte)2, reset.ModuleId);
         Assert.Equal(1, robot.Controller(2)!.Resets);
     }

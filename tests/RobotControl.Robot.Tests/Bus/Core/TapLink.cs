@@ -38,7 +38,10 @@ internal sealed class TapLink(IByteLink inner) : IByteLink
         set => Volatile.Write(ref _deaf, value);
     }
 
-    /// <summary>While true, every write fails with an <see cref="IOException"/>, the bus clock moving <see cref="FailureTime"/> each time.</summary>
+    /// <summary>
+    /// While true, every write fails with an <see cref="IOException"/>, the bus clock moving <see cref="FailureTime"/>
+    /// each time, and a read gets nothing once its timeout has passed (the virtual bus is not run meanwhile).
+    /// </summary>
     public bool Failing
     {
         get => Volatile.Read(ref _failing);
@@ -46,7 +49,7 @@ internal sealed class TapLink(IByteLink inner) : IByteLink
     }
 
     /// <summary>Bus time a failed write takes (the manual clock is moved by it).</summary>
-    public TimeSpan FailureTime { get; init; } = TimeSpan.FromMilliseconds(10);
+    public TimeSpan FailureTime { get; set; } = TimeSpan.FromMilliseconds(10);
 
     public int FailedWrites => Volatile.Read(ref _failedWrites);
 
@@ -127,6 +130,12 @@ internal sealed class TapLink(IByteLink inner) : IByteLink
 
     public int Read(Span<byte> buffer, TimeSpan timeout)
     {
+        if (Failing)
+        {
+            _clock.Advance(timeout); // nothing comes in; the virtual bus is left alone (its clock may be far ahead)
+            return 0;
+        }
+
         var got = new byte[buffer.Length];
         var n = inner.Read(got, timeout);
         if (n == 0 || (!Deaf && LoseReply is null && Rewrite is null))
