@@ -3,7 +3,7 @@
 # minutes. Reports go to out/mutation/; record the scores in docs/testing.md with the date and this command.
 #
 #   bash tools/mutation.sh                 # every .NET target below, then the firmware list
-#   bash tools/mutation.sh dotnet [NAME…]  # Stryker.NET only (NAME: Kinematics, Bus, Robot, ...)
+#   bash tools/mutation.sh dotnet [NAME…]  # Stryker.NET only (NAME: Kinematics, Bus, Robot, Robot.Core, ...)
 #   bash tools/mutation.sh firmware        # the firmware's hand-written mutations only
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -11,12 +11,14 @@ cd "$root"
 out="$root/out/mutation"
 mkdir -p "$out"
 
-# production project : its test project (the mirrored one)
+# target : its test project (the mirrored one). A target is a production project, or a part of one: then its
+# tools/mutation/<target>.json names the project ("project") and the part ("mutate").
 targets=(
   "Hardware:tests/RobotControl.Hardware.Tests"
   "Kinematics:tests/RobotControl.Kinematics.Tests"
   "Bus:tests/RobotControl.Bus.Tests"
   "Robot:tests/RobotControl.Robot.Tests"
+  "Robot.Core:tests/RobotControl.Robot.Tests"
   "Runtime:tests/RobotControl.Runtime.Tests"
   "Host:tests/RobotControl.Host.Tests"
   "Plugins.Standard:tests/RobotControl.Plugins.Standard.Tests"
@@ -38,16 +40,22 @@ run_dotnet() {
     if [ $# -gt 0 ] && [[ " $* " != *" $name "* ]]; then
       continue
     fi
-    project="src/RobotControl.$name/RobotControl.$name.csproj"
-    [ -f "$project" ] || project="plugins/RobotControl.$name/RobotControl.$name.csproj"
+    # The production project: the config's "project" (RobotControl.X.csproj), else RobotControl.<target>.
+    pname="$name"
+    if [ -f "$root/tools/mutation/$name.json" ]; then
+      pname="$(python3 -c 'import json, sys; p = json.load(open(sys.argv[1]))["stryker-config"].get("project", ""); print(p.removeprefix("RobotControl.").removesuffix(".csproj"))' "$root/tools/mutation/$name.json")"
+      [ -n "$pname" ] || pname="$name"
+    fi
+    project="src/RobotControl.$pname/RobotControl.$pname.csproj"
+    [ -f "$project" ] || project="plugins/RobotControl.$pname/RobotControl.$pname.csproj"
     if [ ! -f "$project" ] || [ ! -d "$tests" ]; then
       echo "mutation: $name: no $project or no $tests; skipped"
       continue
     fi
     # The scope (which files are mutated, and why) is in tools/mutation/<Project>.json; without one, the whole project.
-    config=("--project" "RobotControl.$name.csproj" "--configuration" "Release")
+    config=("--project" "RobotControl.$pname.csproj" "--configuration" "Release")
     [ -f "$root/tools/mutation/$name.json" ] && config=("--config-file" "$root/tools/mutation/$name.json")
-    echo "== Stryker.NET: RobotControl.$name (tests: $tests, concurrency $concurrency)"
+    echo "== Stryker.NET: $name (RobotControl.$pname; tests: $tests, concurrency $concurrency)"
     rm -rf "$out/$name"
     (cd "$tests" && nice -n 19 dotnet stryker "${config[@]}" --concurrency "$concurrency" \
       --reporter json --reporter html --reporter progress --output "$out/$name" >"$out/$name.log" 2>&1) || {

@@ -93,6 +93,20 @@ public sealed class SingleWriterTests
             Assert.NotEqual(Environment.CurrentManagedThreadId, busThread);
             Assert.Equal(before + 2, robot.Slot.Ran); // both ran as pieces of work between cycles
             Assert.Equal(RobotState.Discovered, robot.State);
+
+            // Every set-up call of the robot does so (each names its piece of work).
+            Assert.True(robot.Discover().AllAsConfigured);
+            Assert.Empty(robot.CheckParameters());
+            var kp = robot.ReadParameter(2, "kp", 0);
+            Assert.Equal(kp, robot.WriteParameter(2, "kp", 0, kp));
+            Assert.True(robot.WriteParameters() > 0);
+            Assert.All(robot.Home(), r => Assert.True(r.Succeeded, r.ToString()));
+            Assert.True(robot.HomeMotor(robot.Motor("right.elbow")).Succeeded);
+            Assert.True(robot.Reboot(3).Succeeded);
+            robot.EnableTorque(true);
+            robot.EnableTorque(false);
+            Assert.Equal(before + 12, robot.Slot.Ran);
+            Assert.Equal(RobotState.Homed, robot.State);
         }
         finally
         {

@@ -102,11 +102,11 @@ public sealed class BetweenCycles
     }
 
     /// <summary>Runs the next piece of work, if any and no stop is on its way (the owner, between cycles).</summary>
-    internal bool RunNext()
+    internal void RunNext()
     {
         if (_stop.IsRaised || !_queue.TryDequeue(out var item))
         {
-            return false;
+            return;
         }
 
         _client.Interruption = _stop;
@@ -119,8 +119,6 @@ public sealed class BetweenCycles
             _client.Interruption = null;
             Interlocked.Increment(ref _ran);
         }
-
-        return true;
     }
 
     private void Release(bool nested)
