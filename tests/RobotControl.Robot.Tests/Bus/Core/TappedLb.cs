@@ -44,8 +44,8 @@ internal sealed class TappedLb : IDisposable
     public IEnumerable<T> Events<T>()
         where T : RobotEvent => Robot.Events.History().OfType<T>();
 
-    /// <summary>The host says nothing for longer than the modules' bus watchdog: every watchdog trips (the host has not looked yet).</summary>
-    public void SilenceBeyondTheWatchdog() => Sim.Advance(TimeSpan.FromMilliseconds(Lb.Definition.Modules.WatchdogMs + 10));
+    /// <summary>The host says nothing for longer than the modules' bus watchdog's second stage: every watchdog trips, motors off (the host has not looked yet).</summary>
+    public void SilenceBeyondTheWatchdog() => Sim.Advance(TimeSpan.FromMilliseconds(Lb.Definition.Modules.WatchdogOffMs + 10)); // past the second stage: torque off, latched
 
     /// <summary>
     /// Stalls arm <paramref name="arm"/>'s elbow against an obstacle far beyond what its drive can push, with a setpoint
@@ -72,6 +72,10 @@ internal sealed class TappedLb : IDisposable
 
     private sealed class CountingCheck(Action check) : ICycleCheck
     {
+        public void BeforeWrite()
+        {
+        }
+
         public void Check() => check();
     }
 }
