@@ -6,6 +6,7 @@ using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports;
 using RobotControl.Hardware.Loading;
+using RobotControl.Hardware.Model;
 using RobotControl.Modules;
 
 namespace RobotControl.Bench.Stall;
@@ -64,7 +65,7 @@ internal sealed class StallBenchCommand : IBenchCommand
             {
                 try
                 {
-                    var c = RunCase(graph, robotFile, ms, Expected(ms, limitMs, stageMs));
+                    var c = RunCase(graph, robotFile, robot, ms, Expected(ms, limitMs, stageMs));
                     cases.Add(c);
                     Console.WriteLine(c.Line());
                 }
@@ -89,7 +90,7 @@ internal sealed class StallBenchCommand : IBenchCommand
     /// <summary>What a stall of <paramref name="ms"/> must give: under the limit nothing, up to the torque-off stage a soft trip, from it an E-STOP.</summary>
     private static string Expected(int ms, int limitMs, int stageMs) => ms < limitMs ? "nothing" : ms < stageMs ? "soft" : "e_stop";
 
-    private static StallCase RunCase(string graph, string robotFile, int ms, string expected)
+    private static StallCase RunCase(string graph, string robotFile, RobotDefinition robot, int ms, string expected)
     {
         var (sim, transport) = ChildProcess.StartBusSim(robotFile, 0, null);
         using (sim)
@@ -132,7 +133,7 @@ internal sealed class StallBenchCommand : IBenchCommand
             var safety = doc.RootElement.GetProperty("safety");
             var trips = safety.GetProperty("trips").EnumerateArray().ToList();
             var stall = trips.Where(t => t.GetProperty("check").GetString() == "host_stall").Select(t => (Ms: t.GetProperty("measured").GetDouble(), Soft: t.GetProperty("soft").GetBoolean())).ToList();
-            var readBack = ReadBack(transport, robotFile);
+            var readBack = ReadBack(transport, robot);
             var outcome = trips.Any(t => !t.GetProperty("soft").GetBoolean()) ? "e_stop" : trips.Count > 0 ? "soft" : "nothing";
             var final = safety.GetProperty("final_run_level").GetString()!;
             var pass = outcome == expected
@@ -161,12 +162,11 @@ internal sealed class StallBenchCommand : IBenchCommand
     }
 
     /// <summary>Every module read back over the pty, by a client of its own: torque on any channel, and a latched bus watchdog.</summary>
-    private static (int Modules, bool TorqueOffEverywhere, int WatchdogLatched) ReadBack(string transport, string robotFile)
+    private static (int Modules, bool TorqueOffEverywhere, int WatchdogLatched) ReadBack(string transport, RobotDefinition robot)
     {
         var table = ControlTable.Firmware;
         var torque = table["torque_enable"];
         var status = table["hardware_error_status"];
-        var robot = RobotLoader.Load(robotFile);
         using var client = new BusClient(LinkFactory.Open(transport), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(50) });
         var channels = new byte[((torque.Count - 1) * torque.Stride) + torque.Size];
         var error = new byte[1];

@@ -38,13 +38,14 @@ internal sealed class ModuleChecks
     {
         for (var i = 0; i < _controllers.Length; i++)
         {
-            if (_controllers[i].MissedReplies == 0 || _answeredAt[i] == 0)
+            var silent = SilentFor(i, now);
+            if (silent == 0)
             {
                 _answeredAt[i] = now;
             }
-            else if (now - _answeredAt[i] > _silentTicks)
+            else if (silent > _silentTicks)
             {
-                _trip(SafetyCheck.ModuleSilent, _names[i], (now - _answeredAt[i]) * 1e3 / _frequency, _silentMs, "ms", now);
+                _trip(SafetyCheck.ModuleSilent, _names[i], Ms(silent), _silentMs, "ms", now);
             }
         }
     }
@@ -54,9 +55,9 @@ internal sealed class ModuleChecks
     {
         for (var i = 0; i < _controllers.Length; i++)
         {
-            if (_controllers[i].MissedReplies != 0 && _answeredAt[i] != 0 && now - _answeredAt[i] > _silentTicks)
+            if (SilentFor(i, now) is var silent && silent > _silentTicks)
             {
-                return (_names[i], (now - _answeredAt[i]) * 1e3 / _frequency);
+                return (_names[i], Ms(silent));
             }
         }
 
@@ -75,6 +76,11 @@ internal sealed class ModuleChecks
             }
         }
     }
+
+    /// <summary>How long module <paramref name="i"/> has been silent at <paramref name="now"/>, ticks (0: it answered in the last cycle, or was never timed).</summary>
+    private long SilentFor(int i, long now) => _controllers[i].MissedReplies != 0 && _answeredAt[i] != 0 ? now - _answeredAt[i] : 0;
+
+    private double Ms(long ticks) => ticks * 1e3 / _frequency;
 
     private static string ArmName(BusRobot robot, RobotController c) =>
         c.Definition.Arm >= 0 && c.Definition.Arm < robot.Definition.Arms.Count ? robot.Definition.Arms[c.Definition.Arm].Name : "?";

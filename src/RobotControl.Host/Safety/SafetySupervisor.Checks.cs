@@ -84,12 +84,14 @@ public sealed partial class SafetySupervisor
     /// <summary>The loop behind while it drives the arms (PEDAL_DOWN): its last tick older than the stall limit (a tick that overran or hangs).</summary>
     private void CheckLoop(long now)
     {
-        var tick = _inputs.LastTick;
-        if (tick != 0 && now - tick > _stallTicks)
+        if (LoopLag(now) is var lag && lag > _stallTicks)
         {
-            Trip(SafetyCheck.DeadlineMiss, "loop", Ms(now - tick), Ms(_stallTicks), "ms", now);
+            Trip(SafetyCheck.DeadlineMiss, "loop", Ms(lag), Ms(_stallTicks), "ms", now);
         }
     }
+
+    /// <summary>How long since the loop last ticked, timestamp ticks (0 before its first tick: a loop not started is not behind).</summary>
+    private long LoopLag(long now) => _inputs.LastTick is not 0 and var tick ? now - tick : 0;
 
     /// <summary>A jump at a master device (the loop's thread asked the robot to hold already): recorded, PEDAL_UP.</summary>
     private void CheckJumps(long now)

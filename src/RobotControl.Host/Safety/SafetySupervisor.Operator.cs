@@ -89,9 +89,9 @@ public sealed partial class SafetySupervisor
         }
 
         var now = _time.GetTimestamp();
-        if (_inputs.LastTick is not 0 and var tick && now - tick > _stallTicks)
+        if (LoopLag(now) is var lag && lag > _stallTicks)
         {
-            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the control loop has not ticked for {Ms(now - tick):0} ms"));
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the control loop has not ticked for {Ms(lag):0} ms"));
         }
 
         if (_moduleChecks.Silent(now) is { } silent)
@@ -198,7 +198,7 @@ public sealed partial class SafetySupervisor
 
         // After an E-STOP that only silences caused (a host stall past the modules' torque-off stage, the modules' own
         // watchdog), with no module reporting a lost position, the pots may confirm the positions instead of homing.
-        var silencesOnly = Trips.Where(t => !t.Soft).All(t => t.Check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent or SafetyCheck.ModuleFault);
+        var silencesOnly = Trips.Where(t => !t.Soft).All(t => IsSilence(t.Check) || t.Check == SafetyCheck.ModuleFault);
         _confirmByPots = silencesOnly && PositionsInDoubt() == 0;
         _mustRehome = !_confirmByPots;
         _robot.ClearFaultsNow(); // before anything else may ask for motors on

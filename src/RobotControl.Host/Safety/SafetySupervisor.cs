@@ -129,7 +129,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private void Trip(SafetyCheck check, string joint, double measured, double limit, string unit, long now, string source = TripSource, string? reason = null)
     {
         var action = _safeStates[(int)check];
-        var silence = check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent;
+        var silence = IsSilence(check);
         if (silence && measured >= _torqueOffStageMs)
         {
             action = SafeState.TorqueOff;
@@ -178,6 +178,9 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     }
 
     private double Ms(long ticks) => ticks * 1e3 / _time.TimestampFrequency;
+
+    /// <summary>The checks that time a silence (the host's, the loop's, a module's), graded against the modules' torque-off stage.</summary>
+    private static bool IsSilence(SafetyCheck check) => check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent;
 
     /// <summary>An emergency stop asked for from another thread (<see cref="EmergencyStop"/>).</summary>
     private sealed record EmergencyStopRequest(string Source, string Reason);

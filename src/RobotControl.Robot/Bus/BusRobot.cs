@@ -133,7 +133,7 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     /// <summary>The largest step asked of a motor in one write that the cap shortened, output radians (0: none).</summary>
     public double LargestCappedStepRad => _goals.LargestCappedStepRad;
 
-    /// <summary>True while the goals are frozen at the measured positions (<see cref="HoldAtMeasured"/>).</summary>
+    /// <summary>True while the goals are frozen (<see cref="HoldAtMeasured"/>, <see cref="HoldAtSent"/>), from the request on.</summary>
     public bool IsHolding => _goals.IsHolding;
 
     /// <summary>

@@ -9,43 +9,25 @@ namespace RobotControl.Runtime.Tests.Robot;
 
 public sealed class RobotNodeTests
 {
-    private sealed class ElbowSource : Plugin
+    /// <summary>A plug-in <paramref name="name"/> with one output whose value each tick is <paramref name="value"/> of the tick's index (which may throw).</summary>
+    private sealed class Source : Plugin
     {
-        private readonly OutputPort _elbow;
-        private readonly long _throwAt;
+        private readonly OutputPort _output;
+        private readonly Func<long, double> _value;
 
-        public ElbowSource(long throwAt)
-            : base(PluginContext.Standalone("src"))
+        public Source(string name, string output, Func<long, double> value)
+            : base(PluginContext.Standalone(name))
         {
-            _throwAt = throwAt;
-            _elbow = DeclareOutput("elbow", SafeValue.HoldLastFinite, "rad");
+            _value = value;
+            _output = DeclareOutput(output, SafeValue.HoldLastFinite);
         }
 
-        public override void Tick(in TickContext context)
-        {
-            if (context.Index == _throwAt)
-            {
-                throw new InvalidOperationException("source broke");
-            }
-
-            Write(_elbow, 0.5 + (0.001 * context.Index));
-        }
+        public override void Tick(in TickContext context) => Write(_output, _value(context.Index));
     }
 
-    private sealed class SpeedSource : Plugin
-    {
-        private readonly OutputPort _speed;
-        private readonly long _jumpAt;
-
-        public SpeedSource(long jumpAt)
-            : base(PluginContext.Standalone("hand"))
-        {
-            _jumpAt = jumpAt;
-            _speed = DeclareOutput("speed_mm_s", SafeValue.HoldLastFinite, "mm/s");
-        }
-
-        public override void Tick(in TickContext context) => Write(_speed, context.Index == _jumpAt ? 50_000 : 100);
-    }
+    /// <summary>The right elbow's setpoint source (<c>src.elbow</c>): 0.5 rad plus 1 mrad per tick, throwing at tick <paramref name="throwAt"/>.</summary>
+    private static Source ElbowSource(long throwAt) =>
+        new("src", "elbow", i => i == throwAt ? throw new InvalidOperationException("source broke") : 0.5 + (0.001 * i));
 
     [Fact]
     public void A_speed_the_operator_port_calls_implausible_publishes_nothing_for_that_arm_that_tick_and_every_tick_is_reported()
@@ -55,8 +37,8 @@ public sealed class RobotNodeTests
         node.Attach(port, port);
         var graph = new PluginGraph();
         graph.Add(node);
-        graph.Add(new ElbowSource(throwAt: -1));
-        graph.Add(new SpeedSource(jumpAt: 5));
+        graph.Add(ElbowSource(throwAt: -1));
+        graph.Add(new Source("hand", "speed_mm_s", i => i == 5 ? 50_000 : 100)); // a jump at tick 5
         graph.Connect("src.elbow", "robot.right.elbow");
         graph.Connect("hand.speed_mm_s", "robot.right.input_speed_mm_s");
         node.SetDriven(graph.Wires.Select(w => w.To));
@@ -124,7 +106,7 @@ public sealed class RobotNodeTests
         node.Attach(port, port);
         var graph = new PluginGraph();
         graph.Add(node);
-        graph.Add(new ElbowSource(throwAt));
+        graph.Add(ElbowSource(throwAt));
         graph.Connect("src.elbow", "robot.right.elbow");
         node.SetDriven(graph.Wires.Select(w => w.To));
         return (port, node, graph.Compile());

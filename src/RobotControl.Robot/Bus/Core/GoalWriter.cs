@@ -73,8 +73,6 @@ internal sealed class GoalWriter
     /// <summary>True once a write has made goals (<see cref="SentGoal"/> means something).</summary>
     public bool HasWritten => Volatile.Read(ref _capPrimed);
 
-    public bool TorqueOffPending => _torqueOffRequest is not null;
-
     /// <summary>Freezes every goal at its measured position from the next write on (any thread).</summary>
     public void HoldAtMeasured() => Interlocked.CompareExchange(ref _hold, 1, 0);
 
