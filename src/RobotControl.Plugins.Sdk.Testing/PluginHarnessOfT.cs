@@ -44,6 +44,15 @@ public sealed class PluginHarness<TPlugin> : IDisposable
         return this;
     }
 
+    /// <summary>Marks the inputs named <paramref name="inputs"/> as driven by wires, as a graph does (the plug-in's <c>IsWired</c>).</summary>
+    /// <exception cref="ArgumentException">No such input.</exception>
+    public PluginHarness<TPlugin> Wire(params string[] inputs)
+    {
+        ArgumentNullException.ThrowIfNull(inputs);
+        Plugin.MarkWired(inputs.Select(name => Plugin.IndexOfInput(name) is var index and >= 0 ? index : throw new ArgumentException($"'{Plugin.Name}' has no input '{name}'", nameof(inputs))));
+        return this;
+    }
+
     /// <summary>Runs <paramref name="count"/> ticks (the first one ever starts the plug-in).</summary>
     /// <exception cref="ObjectDisposedException">The harness was disposed.</exception>
     public PluginHarness<TPlugin> Tick(int count = 1)

@@ -22,6 +22,7 @@ public abstract class Plugin
     private int _inputBase;
     private int _outputBase;
     private bool _bound;
+    private bool[] _wired = [];
 
     /// <summary>Creates a plug-in; declare ports in the derived constructor.</summary>
     /// <param name="context">The host's context (instance name, robot, clock).</param>
@@ -136,6 +137,24 @@ public abstract class Plugin
 
     /// <summary>Reads back an output's current value.</summary>
     protected double ReadOutput(OutputPort port) => _outputValues[_outputBase + port.Index];
+
+    /// <summary>
+    /// True when a wire of the graph drives <paramref name="port"/>; an unwired input keeps its initial value. Known
+    /// once the plug-in has joined a graph (from <see cref="Start"/> on); false before.
+    /// </summary>
+    protected bool IsWired(InputPort port) => port.Index < _wired.Length && _wired[port.Index];
+
+    /// <summary>Records which inputs the graph's wires drive (called once when the graph is built).</summary>
+    internal void MarkWired(IEnumerable<int> inputIndexes)
+    {
+        var wired = new bool[_inputs.Count];
+        foreach (var index in inputIndexes)
+        {
+            wired[CheckIndex(index, _inputs.Count)] = true;
+        }
+
+        _wired = wired;
+    }
 
     /// <summary>Moves the values into the host's shared buffers (called once when the graph is built).</summary>
     internal void Bind(double[] inputValues, int inputBase, double[] outputValues, int outputBase)

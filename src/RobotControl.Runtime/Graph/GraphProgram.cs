@@ -82,6 +82,12 @@ public sealed class GraphProgram
             return (_outputStart[s] + _order[s].IndexOfOutput(fromPort), inputStart[t] + _order[t].IndexOfInput(toPort), s, t);
         }
 
+        var resolved = wires.Select(Resolve).ToArray();
+        for (var i = 0; i < n; i++)
+        {
+            _order[i].MarkWired(resolved.Where(r => r.TargetNode == i).Select(r => r.Target - inputStart[i]));
+        }
+
         var direct = wires.Where(w => !w.Delayed).Select(Resolve).OrderBy(r => r.TargetNode).ToArray();
         _wireStart = new int[n + 1];
         foreach (var r in direct)
@@ -170,6 +176,8 @@ public sealed class GraphProgram
                 Fault(i, context, "start failed", ex);
             }
         }
+
+        CopyDelayed(); // the first tick's delayed inputs carry what the sources showed after their Start
     }
 
     /// <summary>Runs one tick (allocation-free unless a plug-in faults).</summary>
@@ -218,6 +226,14 @@ public sealed class GraphProgram
             Sanitise(i);
         }
 
+        CopyDelayed();
+    }
+
+    /// <summary>Delayed wires: each target takes its source's value, read by the next tick.</summary>
+    private void CopyDelayed()
+    {
+        var inputs = _inputs;
+        var outputs = _outputs;
         for (var d = 0; d < _delayedSource.Length; d++)
         {
             inputs[_delayedTarget[d]] = outputs[_delayedSource[d]];

@@ -144,27 +144,18 @@ public sealed class RobotNode : Plugin
                 SetInput(_setpoints[a][j].Index, _joints[j]);
             }
         }
+
+        PublishFeedback(port); // what the first tick's delayed wires carry (e.g. into an IK that starts where the arm is)
+        Write(_faults, (int)port.Faults);
+        TeleopEnabled = _operator?.TeleopAllowed ?? true;
+        Write(_teleopEnabled, TeleopEnabled ? 1 : 0);
     }
 
     /// <inheritdoc />
     public override void Tick(in TickContext context)
     {
         var port = _port!;
-        for (var a = 0; a < _positions.Length; a++)
-        {
-            port.ReadJointPositions(a, _joints);
-            for (var j = 0; j < _joints.Length; j++)
-            {
-                Write(_positions[a][j], _joints[j]);
-            }
-
-            port.ReadMotorCurrents(a, _currentValues);
-            for (var m = 0; m < _currentValues.Length; m++)
-            {
-                Write(_currents[a][m], _currentValues[m]);
-            }
-        }
-
+        PublishFeedback(port);
         if (_operator is { } op)
         {
             op.ReportTick();
@@ -229,6 +220,25 @@ public sealed class RobotNode : Plugin
             if (_jawDriven[a] && double.IsFinite(jaw))
             {
                 port.WriteJawSetpoint(a, jaw);
+            }
+        }
+    }
+
+    /// <summary>The joint positions and motor currents the modules report, on the outputs.</summary>
+    private void PublishFeedback(IRobotPort port)
+    {
+        for (var a = 0; a < _positions.Length; a++)
+        {
+            port.ReadJointPositions(a, _joints);
+            for (var j = 0; j < _joints.Length; j++)
+            {
+                Write(_positions[a][j], _joints[j]);
+            }
+
+            port.ReadMotorCurrents(a, _currentValues);
+            for (var m = 0; m < _currentValues.Length; m++)
+            {
+                Write(_currents[a][m], _currentValues[m]);
             }
         }
     }

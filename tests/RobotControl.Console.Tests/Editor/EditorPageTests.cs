@@ -165,7 +165,7 @@ public sealed class EditorPageTests(EditorFixture console)
             await page.ScreenshotAsync(new() { Path = Path.Combine(dir, "graph-editor.png") });
         }
 
-        Assert.Equal(6 + 2 + 2, await page.Locator(".connection.delayed").CountAsync()); // forces, force_enable, the clutches' follow
+        Assert.Equal(6 + 2 + 2 + 12, await page.Locator(".connection.delayed").CountAsync()); // forces, force_enable, the clutches' follow, the IKs' follow and measured joints
 
         await Close(page);
     }

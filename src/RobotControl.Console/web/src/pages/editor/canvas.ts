@@ -168,6 +168,20 @@ export class GraphCanvas {
     return true;
   }
 
+  /**
+   * The top of a free spot for a node at canvas x (about a node wide): below every drawn node that overlaps that
+   * column, with the layout's gap, and never above `top`; a tall node (an IK with a port per joint
+   * and its measured joints) does not hide the one placed after it.
+   */
+  freeTop(x: number, top: number, width = 300): number {
+    let y = top;
+    for (const name of this.ids.keys()) {
+      const e = this.nodeElement(name);
+      if (e && e.offsetLeft < x + width && e.offsetLeft + e.offsetWidth > x) y = Math.max(y, e.offsetTop + e.offsetHeight + 40);
+    }
+    return y;
+  }
+
   /** Scales and moves the view so every node shows. */
   fit(): void {
     const nodes = [...this.container.querySelectorAll<HTMLElement>('.drawflow-node')];

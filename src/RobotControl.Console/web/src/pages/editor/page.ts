@@ -200,10 +200,11 @@ export function editorPage(root: HTMLElement): () => void {
   function add(type: string, at?: { x: number; y: number }): void {
     const g = history.graph;
     const name = freshName(g, type);
-    // Without a drop point: the next free cell of a 4-column grid of the view (the robot sits right of it).
+    // Without a drop point: the next of 4 columns of the view (the robot sits right of them), below what is there.
     const n = g.instances.length;
     const box = canvasBox.getBoundingClientRect();
-    const spot = at ?? canvas.toCanvas(box.left + 30 + (n % 4) * 330, box.top + 20 + Math.floor(n / 4) * 400);
+    const column = canvas.toCanvas(box.left + 30 + (n % 4) * 330, box.top + 20);
+    const spot = at ?? { x: column.x, y: canvas.freeTop(column.x, column.y) };
     history.change((m) => m.instances.push({ name, type, settings: {}, x: spot.x, y: spot.y }));
     selection = { node: name };
     canvas.pick(selection);

@@ -1,10 +1,10 @@
 using RobotControl.Hardware.Model;
 using RobotControl.Robot.Control;
 
-namespace RobotControl.Runtime.Tests.Support;
+namespace RobotControl.TestSupport;
 
-/// <summary>Test double: an ideal robot whose joints are wherever they were last commanded, and an operator port whose run level the test sets.</summary>
-internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort, IOperatorPort
+/// <summary>Test double: an ideal robot whose joints are wherever they were last commanded while teleoperation is allowed (else it holds), and an operator port whose run level the test sets.</summary>
+public sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort, IOperatorPort
 {
     private readonly double[][] _joints = [.. robot.Arms.Select(_ => robot.Joints.Select(j => j.MidRad).ToArray())];
 
@@ -30,7 +30,10 @@ internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort, IO
         }
 
         Writes++;
-        jointsRad.CopyTo(_joints[arm]);
+        if (TeleopAllowed)
+        {
+            jointsRad.CopyTo(_joints[arm]); // else the arm holds, as under the supervisor's hold at PEDAL_UP
+        }
     }
 
     public void WriteJawSetpoint(int arm, double jawRad)
@@ -38,6 +41,9 @@ internal sealed class KinematicRobotPort(RobotDefinition robot) : IRobotPort, IO
     }
 
     public void ReadJointPositions(int arm, Span<double> jointsRad) => _joints[arm].CopyTo(jointsRad);
+
+    /// <summary>Puts <paramref name="arm"/>'s joints at <paramref name="jointsRad"/> (the arm moved by other means, e.g. by hand).</summary>
+    public void MoveTo(int arm, ReadOnlySpan<double> jointsRad) => jointsRad.CopyTo(_joints[arm]);
 
     public void ReadMotorCurrents(int arm, Span<double> currentsA) => currentsA.Clear();
 
