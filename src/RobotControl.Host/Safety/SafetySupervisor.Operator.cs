@@ -35,7 +35,25 @@ public sealed partial class SafetySupervisor
         }
 
         _levels.MoveTo(RunLevel.Homing, source, "homing from the joint pots");
+        try
+        {
+            return HomeAndEnable(source);
+        }
+        catch (IOException ex) when (Level == RunLevel.Homing) // a module refused: back to INIT, saying which (an E-STOP meanwhile stays)
+        {
+            _levels.MoveTo(RunLevel.Init, source, $"homing failed: {ex.Message}");
+            throw;
+        }
+    }
+
+    private IReadOnlyList<HomingResult> HomeAndEnable(string source)
+    {
         _robot.HoldAtMeasured();
+        if (_robot.ModulesHolding > 0)
+        {
+            _robot.AcknowledgeHoldsNow(); // homing is the operator's request for motion: the modules follow again, from where they hold
+        }
+
         if (_robot.State == RobotState.Enabled)
         {
             _robot.EnableTorque(false);

@@ -220,6 +220,13 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     public void RequestHoldAcknowledgement() => _goals.RequestHoldAcknowledgement();
 
     /// <summary>
+    /// Acknowledges the modules' bus holds now, as <see cref="RequestHoldAcknowledgement"/> does at the next write (on the
+    /// bus's owner: queued between cycles when called from another thread): set-up that turns the motors on (homing)
+    /// finds the modules following again; they refuse torque-on while they hold.
+    /// </summary>
+    public void AcknowledgeHoldsNow() => Slot.Run("acknowledge holds", _goals.AcknowledgeHoldsNow);
+
+    /// <summary>
     /// An emergency stop's action, from any thread, lock-free: hold at the measured positions (and, with
     /// <paramref name="torqueOff"/>, the motors off) at the next write, and the piece of work running between cycles
     /// cut short at its next transaction; no queued work starts before the next write.

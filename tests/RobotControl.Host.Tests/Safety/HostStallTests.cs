@@ -76,6 +76,43 @@ public sealed class HostStallTests
     }
 
     [Fact]
+    public void Homing_after_the_motors_went_off_during_the_modules_hold_acknowledges_the_hold_and_turns_them_on()
+    {
+        // A 200 ms stall: the modules hold from 30 ms on (bus_hold, refusing goals and torque-on until acknowledged);
+        // nobody presses the pedal again, the operator turns the motors off (INIT) and homes.
+        IReadOnlyList<Robot.Bus.HomingResult>? homed = null;
+        var run = SafetyRun.Of("stall=200ms@1s", 1.4, reEngageAfter: null, afterRun: supervisor =>
+        {
+            supervisor.MotorsOff("operator");
+            Assert.Equal(RunLevel.Init, supervisor.Level);
+            homed = supervisor.Home("operator");
+        });
+
+        Assert.Equal(6, run.Report.Faults.Count(f => f.Message.Contains("holding its motors", StringComparison.Ordinal)));
+        Assert.NotNull(homed);
+        Assert.Equal(RunLevel.PedalUp, run.FinalLevel);
+        Assert.All(run.Motors, m => Assert.True(m.DriverEnabled, $"{m.Name} not driven after homing"));
+    }
+
+    [Fact]
+    public void Homing_that_a_silent_module_cannot_finish_goes_back_to_init_and_names_its_motors()
+    {
+        // A module silent from 1 s: E_STOP at the modules' torque-off stage; the operator resets and homes, with the
+        // module still silent.
+        Exception? refused = null;
+        var run = SafetyRun.Of("silent=right.forearm@1s", 1.7, afterRun: supervisor =>
+        {
+            supervisor.Reset("operator");
+            refused = Record.Exception(() => supervisor.Home("operator"));
+        });
+
+        Assert.NotNull(refused);
+        Assert.Matches(@"^homing incomplete: 2 of 12 motors not homed \(first: right\.tool_roll NoReply: ", refused.Message); // the silent module's motors
+        Assert.Equal(RunLevel.Init, run.FinalLevel); // not left at HOMING
+        Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} driven after a failed homing"));
+    }
+
+    [Fact]
     public void A_loop_that_stops_ticking_while_it_drives_is_a_soft_deadline_miss_the_arms_hold_and_the_pedal_is_refused_until_it_ticks()
     {
         using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());

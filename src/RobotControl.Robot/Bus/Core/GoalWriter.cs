@@ -94,6 +94,13 @@ internal sealed class GoalWriter
     /// <summary>The modules' bus holds are acknowledged at the next write, before its goals (any thread).</summary>
     public void RequestHoldAcknowledgement() => _holdAcknowledgementRequested = true;
 
+    /// <summary>The modules' bus holds are acknowledged now, between cycles (on the bus thread: set-up that turns the motors on).</summary>
+    public void AcknowledgeHoldsNow()
+    {
+        _holdAcknowledgementRequested = false;
+        AcknowledgeHolds();
+    }
+
     /// <summary>
     /// An emergency stop's action (any thread, lock-free): hold, and with <paramref name="torqueOff"/> the motors off, at
     /// the next write; until that write, the work between cycles is cut short and none starts (<see cref="BetweenCycles"/>).
