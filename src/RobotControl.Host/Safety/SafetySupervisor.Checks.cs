@@ -26,7 +26,7 @@ public sealed partial class SafetySupervisor
         FollowOperator();
         if (Level == RunLevel.Init)
         {
-            Volatile.Write(ref _lastCycle, 0);
+            _clock.Restart();
             return; // motors off and nothing commanded: the checks start with homing
         }
 
@@ -69,29 +69,24 @@ public sealed partial class SafetySupervisor
     /// </summary>
     private void CheckGap(long now)
     {
-        var last = _lastCycle;
-        var gap = last == 0 ? 0 : now - last;
-        Volatile.Write(ref _lastCycle, Level is RunLevel.PedalUp or RunLevel.PedalDown ? now : 0); // read by TeleopAllowed on the loop's thread
-        if (gap > _stallTicks)
+        var gap = _clock.Cycle(now, timed: Level is RunLevel.PedalUp or RunLevel.PedalDown);
+        if (gap > _clock.StallTicks)
         {
             // What persisted across the stall was not observed beyond the stall limit: that part does not count. (A module's
             // silence does: a cycle slowed by a silent module's timeouts is a gap too, and the silence is real.)
-            _motorChecks.Discount(gap - _stallTicks);
-            Trip(SafetyCheck.HostStall, string.Empty, Ms(gap), Ms(_stallTicks), "ms", now);
+            _motorChecks.Discount(gap - _clock.StallTicks);
+            Trip(SafetyCheck.HostStall, string.Empty, _clock.Ms(gap), _clock.Ms(_clock.StallTicks), "ms", now);
         }
     }
 
     /// <summary>The loop behind while it drives the arms (PEDAL_DOWN): its last tick older than the stall limit (a tick that overran or hangs).</summary>
     private void CheckLoop(long now)
     {
-        if (LoopLag(now) is var lag && lag > _stallTicks)
+        if (_clock.LoopLag(now) is var lag && lag > _clock.StallTicks)
         {
-            Trip(SafetyCheck.DeadlineMiss, "loop", Ms(lag), Ms(_stallTicks), "ms", now);
+            Trip(SafetyCheck.DeadlineMiss, "loop", _clock.Ms(lag), _clock.Ms(_clock.StallTicks), "ms", now);
         }
     }
-
-    /// <summary>How long since the loop last ticked, timestamp ticks (0 before its first tick: a loop not started is not behind).</summary>
-    private long LoopLag(long now) => _inputs.LastTick is not 0 and var tick ? now - tick : 0;
 
     /// <summary>A jump at a master device (the loop's thread asked the robot to hold already): recorded, PEDAL_UP.</summary>
     private void CheckJumps(long now)
@@ -110,7 +105,7 @@ public sealed partial class SafetySupervisor
     /// <summary>The first arm whose input device data is older than the master timeout, with its age (ms), or null.</summary>
     private (int Arm, double AgeMs)? StaleArm()
     {
-        for (var a = 0; a < _arms; a++)
+        for (var a = 0; a < _robot.ArmCount; a++)
         {
             var age = _inputs.AgeMs(a);
             if (!(age <= Limits.MasterTimeoutMs))

@@ -1,8 +1,6 @@
 using System.Globalization;
 using RobotControl.Hardware.Model;
-using RobotControl.Modules;
 using RobotControl.Robot.Bus;
-using RobotControl.Robot.Control;
 using RobotControl.Robot.States;
 
 namespace RobotControl.Host.Safety;
@@ -21,74 +19,12 @@ public sealed partial class SafetySupervisor
     /// positions. Homing that does not verify every motor returns to INIT.
     /// </summary>
     /// <exception cref="InvalidOperationException">Not at INIT, or homing incomplete (the message says how many motors failed).</exception>
-    public IReadOnlyList<HomingResult> Home(string source) => _robot.Slot.Run($"homing ({source})", () => HomeOnBus(source));
-
-    private IReadOnlyList<HomingResult> HomeOnBus(string source)
+    public IReadOnlyList<HomingResult> Home(string source) => _robot.Slot.Run($"homing ({source})", () =>
     {
-        if (Level == RunLevel.EStop)
-        {
-            var trips = Trips;
-            var trip = trips.Count > 0 ? trips[0] : null;
-            throw new InvalidOperationException(trip is null
-                ? $"homing ({source}) refused: the run level is E_STOP; an operator reset comes first"
-                : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");
-        }
-
-        _levels.MoveTo(RunLevel.Homing, source, "homing from the joint pots");
-        try
-        {
-            return HomeAndEnable(source);
-        }
-        catch (IOException ex) when (Level == RunLevel.Homing) // a module refused: back to INIT, saying which (an E-STOP meanwhile stays)
-        {
-            _levels.MoveTo(RunLevel.Init, source, $"homing failed: {ex.Message}");
-            throw;
-        }
-    }
-
-    private IReadOnlyList<HomingResult> HomeAndEnable(string source)
-    {
-        _robot.HoldAtMeasured();
-        if (_robot.ModulesHolding > 0)
-        {
-            _robot.AcknowledgeHoldsNow(); // homing is the operator's request for motion: the modules follow again, from where they hold
-        }
-
-        if (_robot.State == RobotState.Enabled)
-        {
-            _robot.EnableTorque(false);
-        }
-
-        var byPots = _confirmByPots;
-        _confirmByPots = false;
-        var lost = _mustRehome ? _motorChecks.Count : byPots ? Math.Max(PositionsInDoubt(), _motorChecks.PotsNotConfirming()) : PositionsInDoubt();
-        if (lost == 0)
-        {
-            _robot.HoldAtMeasured();
-            _robot.EnableTorque(true);
-            _torqueOffTaken = false;
-            _levels.MoveTo(RunLevel.PedalUp, source, byPots
-                ? "after an E-STOP from a stall, the pots confirm every position: not re-homed; motors on, holding"
-                : "no module reports a lost position or a pot mismatch: not re-homed; motors on, holding");
-            return [];
-        }
-
-        var results = _robot.Home();
-        var failed = results.Count(r => !r.Succeeded);
-        if (failed > 0 || _robot.State != RobotState.Homed)
-        {
-            _levels.MoveTo(RunLevel.Init, source, $"homing incomplete: {failed} of {results.Count} motors not homed");
-            var first = results.First(r => !r.Succeeded);
-            throw new InvalidOperationException($"homing incomplete: {failed} of {results.Count} motors not homed (first: {first.Motor.Config.FullName} {first.Outcome}{(first.Detail.Length > 0 ? ": " + first.Detail : string.Empty)}); the run level stays INIT");
-        }
-
-        _mustRehome = false;
-        _robot.HoldAtMeasured();
-        _robot.EnableTorque(true);
+        var results = _homing.Run(source);
         _torqueOffTaken = false;
-        _levels.MoveTo(RunLevel.PedalUp, source, $"{results.Count} motors homed and verified ({(lost == _motorChecks.Count ? "after a reset" : $"{lost} had lost their position")}); motors on, holding");
         return results;
-    }
+    });
 
     /// <summary>PEDAL_UP -> PEDAL_DOWN: teleoperation drives the arms (from the measured positions, under the step cap).</summary>
     /// <exception cref="InvalidOperationException">Not at PEDAL_UP, or an arm's input device data is older than the master timeout.</exception>
@@ -107,9 +43,9 @@ public sealed partial class SafetySupervisor
         }
 
         var now = _time.GetTimestamp();
-        if (LoopLag(now) is var lag && lag > _stallTicks)
+        if (_clock.LoopLag(now) is var lag && lag > _clock.StallTicks)
         {
-            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the control loop has not ticked for {Ms(lag):0} ms"));
+            throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"pedal down ({source}) refused: the control loop has not ticked for {_clock.Ms(lag):0} ms"));
         }
 
         if (_moduleChecks.Silent(now) is { } silent)
@@ -185,7 +121,7 @@ public sealed partial class SafetySupervisor
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(source);
         ArgumentException.ThrowIfNullOrWhiteSpace(reason);
-        _robot.EmergencyHold(reason, _safeStates[(int)SafetyCheck.Operator] == SafeState.TorqueOff && !_torqueOffTaken);
+        _robot.EmergencyHold(reason, _grading.SafeStateOf(SafetyCheck.Operator) == SafeState.TorqueOff && !_torqueOffTaken);
         if (_robot.Slot.IsOwner)
         {
             Trip(SafetyCheck.Operator, string.Empty, 0, 0, string.Empty, _time.GetTimestamp(), source, reason);
@@ -216,32 +152,12 @@ public sealed partial class SafetySupervisor
 
         // After an E-STOP that only silences caused (a host stall past the modules' torque-off stage, the modules' own
         // watchdog), with no module reporting a lost position, the pots may confirm the positions instead of homing.
-        var silencesOnly = Trips.Where(t => !t.Soft).All(t => IsSilence(t.Check) || t.Check == SafetyCheck.ModuleFault);
-        _confirmByPots = silencesOnly && PositionsInDoubt() == 0;
-        _mustRehome = !_confirmByPots;
+        _homing.AfterReset(silencesOnly: Trips.Where(t => !t.Soft).All(t => TripGrading.IsSilence(t.Check) || t.Check == SafetyCheck.ModuleFault));
         _robot.ClearFaultsNow(); // before anything else may ask for motors on
         _trips.Reset();
 
         _motorChecks.Clear();
         _levels.MoveTo(RunLevel.Init, source, "operator reset: motors off, faults cleared; homing needed before motion");
-    }
-
-    /// <summary>
-    /// Motors whose module said at discovery or since (its latched <c>hardware_error_status</c>) that a position may
-    /// be wrong (position lost or pot mismatch); a module that is not present counts all its motors. No bus traffic.
-    /// </summary>
-    private int PositionsInDoubt()
-    {
-        var doubt = 0;
-        foreach (var c in _controllers)
-        {
-            if (!c.Present || ((HardwareErrors)c.HardwareErrorStatus).HasAny(HardwareErrors.PositionLost | HardwareErrors.PotMismatch))
-            {
-                doubt += c.Motors.Count;
-            }
-        }
-
-        return doubt;
     }
 
     /// <summary>The operator's pedals as the graph reports them (nothing when the graph has none): edges move the run level.</summary>
@@ -277,14 +193,7 @@ public sealed partial class SafetySupervisor
     /// stall the bus thread has not seen yet) it is false, so that the graph's clutch holds the master's target from
     /// before the stall and re-engaging starts where the arms hold.
     /// </summary>
-    public bool TeleopAllowed
-    {
-        get
-        {
-            var last = Volatile.Read(ref _lastCycle);
-            return !_robot.IsHolding && (last == 0 || _time.GetTimestamp() - last <= _stallTicks);
-        }
-    }
+    public bool TeleopAllowed => !_robot.IsHolding && _clock.OnTime();
 
     /// <inheritdoc />
     public void ReportTick() => _inputs.ReportTick();
@@ -300,7 +209,4 @@ public sealed partial class SafetySupervisor
 
     /// <inheritdoc />
     public void ReportEmergencyStop(bool pressed) => _inputs.ReportEmergencyStop(pressed);
-
-    /// <summary>The age last reported for <paramref name="arm"/>'s input device data, ms (0 before any report).</summary>
-    public double InputAgeMs(int arm) => _inputs.AgeMs(arm);
 }

@@ -1,10 +1,7 @@
-using System.Globalization;
 using RobotControl.Hardware.Model;
-using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
 using RobotControl.Robot.Control.States;
-using RobotControl.Robot.States;
 
 namespace RobotControl.Host.Safety;
 
@@ -40,19 +37,14 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private readonly TimeProvider _time;
     private readonly StateMachine<RunLevel> _levels;
     private readonly TripLog _trips = new();
-    private readonly RobotController[] _controllers;
     private readonly MotorChecks _motorChecks;
     private readonly ModuleChecks _moduleChecks;
     private readonly OperatorInputs _inputs;
-    private readonly SafeState[] _safeStates; // per check, looked up once: a trip's path does no dictionary lookup
-    private readonly long _stallTicks;
-    private readonly double _torqueOffStageMs;
-    private readonly int _arms;
-    private long _lastCycle;
+    private readonly TripGrading _grading;
+    private readonly StallClock _clock;
+    private readonly SupervisedHoming _homing;
     private long _jumpsSeen;
     private volatile bool _torqueOffTaken;
-    private bool _mustRehome;
-    private bool _confirmByPots;
     private OperatorPedal _lastPedal;
     private OperatorPedal _lastEmergencyStop;
     private EmergencyStopRequest? _stopRequest;
@@ -71,16 +63,13 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         Limits = limits;
         LoopPeriod = loopPeriod;
         _levels = RunLevels.NewMachine(_time);
-        _controllers = [.. robot.Controllers];
-        _safeStates = [.. Enum.GetValues<SafetyCheck>().Select(limits.SafeStateOf)];
+        _grading = new TripGrading(limits, robot.Definition.Modules.WatchdogOffMs); // the modules' torque-off stage (they hold from WatchdogMs)
         TripRecorder trip = (check, joint, measured, limit, unit, now) => Trip(check, joint, measured, limit, unit, now);
         _motorChecks = new MotorChecks(robot, limits, trip);
         _moduleChecks = new ModuleChecks(robot, limits, trip);
-        var f = _time.TimestampFrequency;
-        _stallTicks = (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * f);
-        _arms = robot.ArmCount;
-        _inputs = new OperatorInputs(_arms, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
-        _torqueOffStageMs = robot.Definition.Modules.WatchdogOffMs; // the modules switch their motors off after this much silence (they hold from WatchdogMs)
+        _homing = new SupervisedHoming(robot, _motorChecks, _levels, _trips);
+        _inputs = new OperatorInputs(robot.ArmCount, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
+        _clock = new StallClock(_time, (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * _time.TimestampFrequency), _inputs);
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.CycleCheck = this;
@@ -116,26 +105,15 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     /// <summary>Makes <paramref name="timestamp"/> the origin of report times (the start of a run).</summary>
     public void SetOrigin(long timestamp) => Origin = timestamp;
 
-    /// <summary>Records a trip (once per check until a reset), takes its safe state and moves to E-STOP.</summary>
     /// <summary>
-    /// Every trip goes through here, graded. A silence (<see cref="SafetyCheck.HostStall"/>,
-    /// <see cref="SafetyCheck.DeadlineMiss"/>, <see cref="SafetyCheck.ModuleSilent"/>) as long as the modules'
-    /// torque-off stage or longer is a trip with the motors off, whatever its safe state: the modules have switched
-    /// them off already. Shorter, and for the master's checks (<see cref="SafetyCheck.MasterTimeout"/>,
-    /// <see cref="SafetyCheck.MasterJump"/>), a safe state of hold makes it a soft trip (<see cref="SoftTrip"/>). Any
-    /// other trip records what crossed which limit, takes the check's safe state at the next write and moves to
-    /// E_STOP; each check trips once until a reset.
+    /// Every trip goes through here, graded (<see cref="TripGrading"/>): a soft one holds (<see cref="SoftTrip"/>); any
+    /// other records what crossed which limit, takes its safe state at the next write and moves to E_STOP; each check
+    /// trips once until a reset.
     /// </summary>
     private void Trip(SafetyCheck check, string joint, double measured, double limit, string unit, long now, string source = TripSource, string? reason = null)
     {
-        var action = _safeStates[(int)check];
-        var silence = IsSilence(check);
-        if (silence && measured >= _torqueOffStageMs)
-        {
-            action = SafeState.TorqueOff;
-            limit = _torqueOffStageMs;
-        }
-        else if (action == SafeState.Hold && (silence || check is SafetyCheck.MasterTimeout or SafetyCheck.MasterJump))
+        (var action, limit, var soft) = _grading.Grade(check, measured, limit);
+        if (soft)
         {
             SoftTrip(check, joint, measured, limit, unit, now);
             return;
@@ -176,11 +154,6 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
             _levels.MoveTo(RunLevel.PedalUp, TripSource, trip.ToString());
         }
     }
-
-    private double Ms(long ticks) => ticks * 1e3 / _time.TimestampFrequency;
-
-    /// <summary>The checks that time a silence (the host's, the loop's, a module's), graded against the modules' torque-off stage.</summary>
-    private static bool IsSilence(SafetyCheck check) => check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent;
 
     /// <summary>An emergency stop asked for from another thread (<see cref="EmergencyStop"/>).</summary>
     private sealed record EmergencyStopRequest(string Source, string Reason);
