@@ -14,7 +14,7 @@ mkdir -p "$out"
 # target : its test project (the mirrored one). A target is a production project, or a part of one: then its
 # tools/mutation/<target>.json names the project ("project") and the part ("mutate").
 targets=(
-  "Hardware:tests/RobotControl.Hardware.Tests"
+  "Definitions:tests/RobotControl.Definitions.Tests"
   "Kinematics:tests/RobotControl.Kinematics.Tests"
   "Bus:tests/RobotControl.Bus.Tests"
   "Robot:tests/RobotControl.Robot.Tests"

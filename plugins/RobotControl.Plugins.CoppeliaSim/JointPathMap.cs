@@ -1,5 +1,5 @@
-using RobotControl.Hardware.Json;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Json;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Urdf;
 using RobotControl.Plugins.Sdk.Settings;
 

@@ -55,7 +55,7 @@ public sealed class TouchPlugin : Plugin<TouchSettings>, IFaultInjectable
         : base(settings, context)
     {
         Backend = backend(Settings, Context);
-        _speedLimit = (Context.Robot?.Safety ?? new Hardware.Model.SafetyLimits()).MasterSpeedMaxMmPerS;
+        _speedLimit = (Context.Robot?.Safety ?? new Definitions.Model.SafetyLimits()).MasterSpeedMaxMmPerS;
         _fx = DeclareInput("force_x", "N", "force to render along device x");
         _fy = DeclareInput("force_y", "N", "force to render along device y");
         _fz = DeclareInput("force_z", "N", "force to render along device z");

@@ -2,7 +2,7 @@ using RobotControl.Analysis.CurrentLimits;
 using RobotControl.Analysis.Drivetrain;
 using RobotControl.Analysis.Sweep;
 using RobotControl.Analysis.Workspace;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Analysis;
 

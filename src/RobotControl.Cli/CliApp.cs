@@ -54,7 +54,7 @@ internal static class CliApp
             return parse.Invoke(new InvocationConfiguration { Output = output, Error = error, EnableDefaultExceptionHandler = false });
         }
         catch (Exception ex) when (ex is IOException or FormatException or ArgumentException or InvalidOperationException or UnauthorizedAccessException
-                                       or KeyNotFoundException or OverflowException or Hardware.Loading.RobotDataException or Runtime.Graph.GraphException)
+                                       or KeyNotFoundException or OverflowException or Definitions.Loading.RobotDataException or Runtime.Graph.GraphException)
         {
             error.WriteLine($"error: {OneLine(ex.Message)}");
             return BadInput;

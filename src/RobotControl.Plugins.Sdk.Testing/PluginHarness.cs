@@ -1,6 +1,6 @@
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using System.Text.Json;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Plugins.Sdk.Testing;

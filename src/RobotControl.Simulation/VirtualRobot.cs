@@ -1,7 +1,7 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Modules;
 using RobotControl.Simulation.Bus;
 using RobotControl.Simulation.Models;

@@ -1,5 +1,5 @@
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Plugins.CoppeliaSim;
 using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;

@@ -32,9 +32,9 @@ public sealed class ArchitectureDocTests
     {
         var graph = DependencyGraph.Generate();
 
-        Assert.Contains("  Hardware[\"RobotControl.Hardware\"]\n", graph, StringComparison.Ordinal);
+        Assert.Contains("  Definitions[\"RobotControl.Definitions\"]\n", graph, StringComparison.Ordinal);
         Assert.Contains("  Plugins_Touch[\"RobotControl.Plugins.Touch\"]\n", graph, StringComparison.Ordinal);
-        Assert.Contains("  Kinematics --> Hardware\n", graph, StringComparison.Ordinal);
+        Assert.Contains("  Kinematics --> Definitions\n", graph, StringComparison.Ordinal);
         Assert.DoesNotContain("Tests", graph, StringComparison.Ordinal);
     }
 }

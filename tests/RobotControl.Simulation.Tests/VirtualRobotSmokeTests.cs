@@ -1,6 +1,6 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
 using RobotControl.TestSupport;

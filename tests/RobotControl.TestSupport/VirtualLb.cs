@@ -1,8 +1,8 @@
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using System.Text.Json.Nodes;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;

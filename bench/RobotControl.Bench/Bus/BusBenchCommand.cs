@@ -3,7 +3,7 @@ using System.Globalization;
 using System.Text.Json;
 using RobotControl.Bench.Ik;
 using RobotControl.Bus.Client;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
@@ -65,7 +65,7 @@ internal sealed class BusBenchCommand : IBenchCommand
         return 0;
     }
 
-    private static RunResult Measure(RobotControl.Hardware.Model.RobotDefinition robot, int baud, double seconds)
+    private static RunResult Measure(RobotControl.Definitions.Model.RobotDefinition robot, int baud, double seconds)
     {
         var clock = new ManualTimeProvider();
         using var sim = new VirtualRobot(robot, clock, new VirtualRobotOptions { BaudRate = baud });

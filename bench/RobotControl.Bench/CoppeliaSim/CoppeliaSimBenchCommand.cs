@@ -3,7 +3,7 @@ using System.Globalization;
 using System.Text.Json;
 using RobotControl.CoppeliaSim;
 using RobotControl.CoppeliaSim.Tests;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Plugins.CoppeliaSim;
 using RobotControl.Plugins.CoppeliaSim.Tests;
 using RobotControl.Runtime.Discovery;
@@ -73,7 +73,7 @@ internal sealed class CoppeliaSimBenchCommand : IBenchCommand
         return (client.RoundTrips - before) / watch.Elapsed.TotalSeconds;
     }
 
-    private static LoopResult LoopRun(string robotPath, Hardware.Model.RobotDefinition robot, List<string> paths, double seconds, int? ticksPerStep)
+    private static LoopResult LoopRun(string robotPath, Definitions.Model.RobotDefinition robot, List<string> paths, double seconds, int? ticksPerStep)
     {
         using var server = new FakeCoppeliaSim(paths) { WaitsPerStep = 1 };
         var instances = ticksPerStep is { } n

@@ -1,5 +1,5 @@
 using BenchmarkDotNet.Attributes;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Kinematics.Forward;
 using RobotControl.Kinematics.Inverse;
 

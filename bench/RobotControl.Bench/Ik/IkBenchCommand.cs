@@ -1,6 +1,6 @@
 using System.Globalization;
 using System.Text.Json;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Kinematics.Forward;
 using RobotControl.Kinematics.Inverse;
 

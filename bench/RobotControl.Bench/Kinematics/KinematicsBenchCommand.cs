@@ -1,7 +1,7 @@
 using System.Diagnostics;
 using System.Globalization;
 using System.Text.Json;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Kinematics.ClosedForm;
 using RobotControl.Kinematics.Coupling;
 using RobotControl.Kinematics.Forward;

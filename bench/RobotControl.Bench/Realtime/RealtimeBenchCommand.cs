@@ -3,7 +3,7 @@ using System.Globalization;
 using System.Runtime;
 using System.Text.Json;
 using RobotControl.Cli;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Realtime;
 using RobotControl.Host.Safety;

@@ -5,8 +5,8 @@ using RobotControl.Bench.Realtime;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Modules;
 
 namespace RobotControl.Bench.Stall;

@@ -1,5 +1,5 @@
 using System.Globalization;
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Plugins.Standard.Kinematics;

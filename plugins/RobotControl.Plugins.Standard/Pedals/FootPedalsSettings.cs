@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Plugins.Standard.Pedals;

@@ -1,5 +1,5 @@
 using RobotControl.Analysis.Drivetrain;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Forward;
 
 namespace RobotControl.Analysis.Sweep;

@@ -1,5 +1,5 @@
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Cli.Commands;
 

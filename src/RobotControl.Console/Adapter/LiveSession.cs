@@ -236,7 +236,7 @@ public sealed class LiveSession : IConsoleSession
         TaskScheduler.Default);
 
     /// <summary>The 3D view's model: the host's URDF of the robot (both arms) and each arm's joints and signals.</summary>
-    private static RobotModelView BuildModel(Hardware.Model.RobotDefinition robot)
+    private static RobotModelView BuildModel(Definitions.Model.RobotDefinition robot)
     {
         var urdf = UrdfExport.ToDocument(robot).ToString();
         var arms = robot.Arms.Select(a => new ArmView(

@@ -39,7 +39,7 @@ internal sealed class SurgeonStation(RobotSession session, CommandQueue queue, S
     /// <inheritdoc cref="IConsoleSession.Workspace"/>
     public WorkspaceView Workspace => _workspace ??= BuildWorkspace();
 
-    private Hardware.Model.RobotDefinition Robot => session.Connection.Definition!;
+    private Definitions.Model.RobotDefinition Robot => session.Connection.Definition!;
 
     private SafetySupervisor Supervisor => session.Supervisor;
 

@@ -1,6 +1,6 @@
 using System.Text.Json;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.GraphFiles;

@@ -1,7 +1,7 @@
 using System.Text.Json;
-using RobotControl.Hardware.Json;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Json;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;

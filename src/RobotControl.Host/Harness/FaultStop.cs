@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Host.Safety;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;

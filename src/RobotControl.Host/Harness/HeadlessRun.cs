@@ -1,6 +1,6 @@
 using System.Globalization;
 using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Host.Realtime;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;

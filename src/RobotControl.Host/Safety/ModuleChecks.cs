@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Robot.Bus;
 
 namespace RobotControl.Host.Safety;

@@ -1,5 +1,5 @@
 using System.Text.Json;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Host.Safety;
 

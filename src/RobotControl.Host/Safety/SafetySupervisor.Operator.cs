@@ -1,5 +1,5 @@
 using System.Globalization;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.States;
 

@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Host.Safety;
 

@@ -1,7 +1,7 @@
 using System.Reflection;
 using System.Runtime.CompilerServices;
 using RobotControl.Bus.Client;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Host.Safety;
 using RobotControl.Modules;
 using RobotControl.Plugins.Sdk;

@@ -1,8 +1,8 @@
 using System.Globalization;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;

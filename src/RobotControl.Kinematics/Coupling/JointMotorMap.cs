@@ -1,5 +1,5 @@
 using MathNet.Numerics.LinearAlgebra;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Kinematics.Coupling;
 

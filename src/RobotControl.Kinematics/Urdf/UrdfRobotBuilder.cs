@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Geometry;
 using RobotControl.Kinematics.Mirroring;
 

@@ -1,5 +1,5 @@
 using System.Runtime.InteropServices;
-using RobotControl.Hardware.Exchange;
+using RobotControl.Definitions.Exchange;
 
 namespace RobotControl.Plugins.Sdk.Exchange;
 

@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 
 namespace RobotControl.Plugins.Sdk.Settings;
 

@@ -2,7 +2,7 @@ using System.Collections.Concurrent;
 using System.Globalization;
 using System.Reflection;
 using System.Text.Json;
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 
 namespace RobotControl.Plugins.Sdk.Settings;
 

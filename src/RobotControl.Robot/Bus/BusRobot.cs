@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 using RobotControl.Bus.Client;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Coupling;
 using RobotControl.Robot.Control;
 using RobotControl.Robot.Control.States;

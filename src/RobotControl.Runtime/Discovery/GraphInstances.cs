@@ -1,5 +1,5 @@
 using System.Text.Json;
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using RobotControl.Plugins.Sdk.Settings;
 
 namespace RobotControl.Runtime.Discovery;

@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Settings;
 using SdkVersions = RobotControl.Plugins.Sdk.SdkVersion;

@@ -1,5 +1,5 @@
 using System.Text.Json;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Plugins.Sdk.Settings;

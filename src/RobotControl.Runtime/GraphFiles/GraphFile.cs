@@ -1,9 +1,9 @@
 using System.Globalization;
 using System.Text;
 using System.Text.Json;
-using RobotControl.Hardware.Json;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Json;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Settings;
 using RobotControl.Runtime.Discovery;

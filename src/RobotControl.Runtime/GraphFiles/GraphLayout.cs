@@ -1,5 +1,5 @@
 using System.Text.Json;
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using RobotControl.Runtime.Robot;
 
 namespace RobotControl.Runtime.GraphFiles;

@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using System.Globalization;
 using System.Text.Json;
 using System.Text.Json.Nodes;

@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Robot;
 

@@ -1,5 +1,5 @@
 using RobotControl.Analysis.Sweep;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Analysis.Tests.Sweep;
 

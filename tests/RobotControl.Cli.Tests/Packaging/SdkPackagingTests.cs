@@ -19,7 +19,7 @@ public sealed class SdkPackagingTests : IDisposable
     private static readonly string[] PackedSources =
     [
         ".editorconfig", "Directory.Build.props", "Directory.Packages.props", "nuget.config", "global.json",
-        "src/RobotControl.Hardware", "src/RobotControl.Plugins.Sdk", "src/RobotControl.Plugins.Sdk.Testing", "templates",
+        "src/RobotControl.Definitions", "src/RobotControl.Plugins.Sdk", "src/RobotControl.Plugins.Sdk.Testing", "templates",
     ];
 
     private readonly string _dir = Directory.CreateTempSubdirectory("rc-sdkpack-").FullName;
@@ -44,12 +44,12 @@ public sealed class SdkPackagingTests : IDisposable
 
         // 1. Pack: the SDK (with the robot model it depends on), the testing companion, the template; then the SDK
         //    again as the next major version, the way a future SDK release would be.
-        WriteSolution(Path.Combine(sources, "pack.slnx"), "src/RobotControl.Hardware/RobotControl.Hardware.csproj", "src/RobotControl.Plugins.Sdk/RobotControl.Plugins.Sdk.csproj", "src/RobotControl.Plugins.Sdk.Testing/RobotControl.Plugins.Sdk.Testing.csproj", "templates/RobotControl.Templates/RobotControl.Templates.csproj");
+        WriteSolution(Path.Combine(sources, "pack.slnx"), "src/RobotControl.Definitions/RobotControl.Definitions.csproj", "src/RobotControl.Plugins.Sdk/RobotControl.Plugins.Sdk.csproj", "src/RobotControl.Plugins.Sdk.Testing/RobotControl.Plugins.Sdk.Testing.csproj", "templates/RobotControl.Templates/RobotControl.Templates.csproj");
         dotnet.Run(sources, "pack", "pack.slnx", "-c", "Release", "-o", feed);
-        WriteSolution(Path.Combine(sources, "pack-next-major.slnx"), "src/RobotControl.Hardware/RobotControl.Hardware.csproj", "src/RobotControl.Plugins.Sdk/RobotControl.Plugins.Sdk.csproj");
+        WriteSolution(Path.Combine(sources, "pack-next-major.slnx"), "src/RobotControl.Definitions/RobotControl.Definitions.csproj", "src/RobotControl.Plugins.Sdk/RobotControl.Plugins.Sdk.csproj");
         dotnet.Run(sources, "pack", "pack-next-major.slnx", "-c", "Release", "-o", nextMajorFeed, $"-p:VersionPrefix={nextMajor}");
         var version = SdkVersion.Format(host);
-        foreach (var package in new[] { "RobotControl.Hardware", "RobotControl.Plugins.Sdk", "RobotControl.Plugins.Sdk.Testing", "RobotControl.Templates" })
+        foreach (var package in new[] { "RobotControl.Definitions", "RobotControl.Plugins.Sdk", "RobotControl.Plugins.Sdk.Testing", "RobotControl.Templates" })
         {
             Assert.True(File.Exists(Path.Combine(feed, $"{package}.{version}.nupkg")), $"{package}.{version}.nupkg was not packed");
         }

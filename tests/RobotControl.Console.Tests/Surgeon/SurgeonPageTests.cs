@@ -146,7 +146,7 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
             Assert.True(await entry.GetByTestId("fault-detail").IsVisibleAsync());
             var detail = await entry.GetByTestId("fault-detail").TextContentAsync() ?? string.Empty;
             Assert.Contains("check module_silent · left.forearm", detail, StringComparison.Ordinal);
-            var stage = Hardware.Loading.RobotLoader.Load(Path.Combine(folder, "lb-estop-off.json")).Modules.WatchdogOffMs; // the modules' torque-off stage
+            var stage = Definitions.Loading.RobotLoader.Load(Path.Combine(folder, "lb-estop-off.json")).Modules.WatchdogOffMs; // the modules' torque-off stage
             Assert.Contains($"limit {stage} ms", detail, StringComparison.Ordinal);
             Assert.Contains("action torque_off", detail, StringComparison.Ordinal);
             await page.Context.CloseAsync();

@@ -1,5 +1,5 @@
 using System.Text.Json.Nodes;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Host.Safety;
 
 namespace RobotControl.Host.Tests.Safety;

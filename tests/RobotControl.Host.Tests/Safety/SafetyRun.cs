@@ -1,5 +1,5 @@
 using RobotControl.Bus.Protocol;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Safety;
 using RobotControl.Plugins.Touch;

@@ -22,8 +22,8 @@ public sealed class CodeWarmUpTests
         Assert.All(session.Graph.Program.Order, p => Assert.Contains(p.GetType(), types));
         Assert.Contains(typeof(Runtime.Loop.ControlLoop), types);
         Assert.Contains(typeof(Host.Safety.SafetySupervisor), types);
-        Assert.Contains(typeof(Hardware.Model.SafetyLimits), types); // a trip's path
-        Assert.Contains(typeof(Hardware.Model.MotorName), types); // a trip names its motor
+        Assert.Contains(typeof(Definitions.Model.SafetyLimits), types); // a trip's path
+        Assert.Contains(typeof(Definitions.Model.MotorName), types); // a trip names its motor
         Assert.Contains(typeof(Modules.HardwareErrors), types);
         Assert.Contains(types, t => t.Assembly.GetName().Name == "RobotControl.Kinematics");
     }

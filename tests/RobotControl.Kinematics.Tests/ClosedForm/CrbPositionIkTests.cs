@@ -1,5 +1,5 @@
 using System.Text.Json.Nodes;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Kinematics.ClosedForm;
 using RobotControl.Kinematics.Forward;
 using RobotControl.Kinematics.Geometry;
@@ -277,7 +277,7 @@ public sealed class CrbPositionIkTests
         Assert.Equal(-89.8 * Deg, joints[1], 9);
     }
 
-    private static Hardware.Model.RobotDefinition WithRange(int joint, double minDeg, double maxDeg)
+    private static Definitions.Model.RobotDefinition WithRange(int joint, double minDeg, double maxDeg)
     {
         var json = JsonNode.Parse(File.ReadAllText(TestRobots.PathOf("crb-1.0.json")))!;
         json["joints"]![joint]!["min_deg"] = minDeg;

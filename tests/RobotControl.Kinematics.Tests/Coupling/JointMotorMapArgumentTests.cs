@@ -1,6 +1,6 @@
 using System.Text.Json.Nodes;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Coupling;
 
 namespace RobotControl.Kinematics.Tests.Coupling;

@@ -1,5 +1,5 @@
 using MathNet.Numerics.LinearAlgebra;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Forward;
 using RobotControl.Kinematics.Geometry;
 using RobotControl.Kinematics.Tests.Inverse;

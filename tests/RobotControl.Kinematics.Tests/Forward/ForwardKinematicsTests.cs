@@ -51,7 +51,7 @@ public sealed class ForwardKinematicsTests
     [Fact]
     public void Dh_row_transform_is_the_closed_form_standard_DH_matrix()
     {
-        var row = new Hardware.Model.DhRow(0.3, 12.5, -4.0, 0.2, 0);
+        var row = new Definitions.Model.DhRow(0.3, 12.5, -4.0, 0.2, 0);
         var q = 0.7;
         var t = DhMatrix.RowTransform(row, q);
         var (st, ct) = Math.SinCos(q + 0.2);

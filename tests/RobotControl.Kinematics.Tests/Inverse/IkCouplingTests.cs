@@ -30,7 +30,7 @@ public sealed class IkCouplingTests
         Assert.Equal(q[3], gears[3], 12);
     }
 
-    private static double[] SolveAndCouple(Hardware.Model.RobotDefinition robot, OrientationAxes axes, out double[] q)
+    private static double[] SolveAndCouple(Definitions.Model.RobotDefinition robot, OrientationAxes axes, out double[] q)
     {
         var chain = new KinematicChain(robot);
         var map = new JointMotorMap(robot);

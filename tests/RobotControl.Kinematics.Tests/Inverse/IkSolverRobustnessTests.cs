@@ -97,7 +97,7 @@ public sealed class IkSolverRobustnessTests
         Assert.Throws<ArgumentOutOfRangeException>(() => new IkSolver(chain, new IkOptions { OrientationWeight = double.NaN }));
         Assert.Throws<ArgumentOutOfRangeException>(() => new IkSolver(chain, new IkOptions { MaxIterations = 0 }));
         var rows = chain.Rows;
-        Hardware.Model.JointDefinition[] joints = [.. chain.Joints];
+        Definitions.Model.JointDefinition[] joints = [.. chain.Joints];
         joints[1] = joints[1] with { MinRad = 1, MaxRad = 0 };
         Assert.Throws<ArgumentException>(() => new IkSolver(new KinematicChain(rows, joints)));
     }

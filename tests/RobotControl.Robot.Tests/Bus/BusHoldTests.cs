@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 using RobotControl.Bus.Protocol;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Robot.Control;
 using RobotControl.Robot.Events;
 using RobotControl.Robot.States;

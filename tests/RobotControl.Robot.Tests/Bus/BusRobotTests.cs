@@ -1,5 +1,5 @@
 using System.Text.Json.Nodes;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Control;
 using RobotControl.Simulation;

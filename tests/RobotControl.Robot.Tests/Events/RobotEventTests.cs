@@ -1,7 +1,7 @@
 using System.Text.Json.Nodes;
 using RobotControl.Bus.Protocol;
 using RobotControl.TestSupport;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.Events;

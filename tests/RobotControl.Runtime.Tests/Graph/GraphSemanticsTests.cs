@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Tests.Support;
 using RobotControl.TestSupport;

@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;

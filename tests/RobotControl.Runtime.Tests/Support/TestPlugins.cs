@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Json;
+using RobotControl.Definitions.Json;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Ports;
 using RobotControl.Plugins.Sdk.Settings;

@@ -1,6 +1,6 @@
 using System.Globalization;
 using RobotControl.Analysis.Sweep;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Cli.Commands.Analysis;
 

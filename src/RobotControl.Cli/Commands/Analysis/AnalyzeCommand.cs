@@ -6,8 +6,8 @@ using RobotControl.Analysis.Output;
 using RobotControl.Analysis.Sweep;
 using RobotControl.Analysis.Workspace;
 using RobotControl.Cli.Options;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using Spectre.Console;
 
 namespace RobotControl.Cli.Commands.Analysis;

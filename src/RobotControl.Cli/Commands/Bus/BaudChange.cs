@@ -1,7 +1,7 @@
 using System.Globalization;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Host.Session;
 using RobotControl.Modules;
 

@@ -1,6 +1,6 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Modules;
 
 namespace RobotControl.Cli.Commands.Bus;

@@ -77,7 +77,7 @@ internal sealed class BusOptions
         {
             return body();
         }
-        catch (Exception ex) when (ex is FormatException or IOException or ArgumentException or KeyNotFoundException or Hardware.Loading.RobotDataException or InvalidOperationException)
+        catch (Exception ex) when (ex is FormatException or IOException or ArgumentException or KeyNotFoundException or Definitions.Loading.RobotDataException or InvalidOperationException)
         {
             parse.InvocationConfiguration.Error.WriteLine(ex.Message);
             return 2;

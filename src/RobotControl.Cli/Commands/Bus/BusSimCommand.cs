@@ -4,7 +4,7 @@ using System.Runtime.InteropServices;
 using RobotControl.Bus.Transports;
 using RobotControl.Bus.Transports.Serial;
 using RobotControl.Cli.Options;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Modules;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;

@@ -1,6 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.ClosedForm;
 using RobotControl.Kinematics.Coupling;
 using RobotControl.Kinematics.Forward;

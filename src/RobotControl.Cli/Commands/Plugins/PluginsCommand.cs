@@ -1,8 +1,8 @@
 using System.CommandLine;
 using System.Text.Json;
 using RobotControl.Cli.Commands.Run;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Runtime.Discovery;
 

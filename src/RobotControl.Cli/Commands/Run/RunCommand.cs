@@ -2,7 +2,7 @@ using System.CommandLine;
 using System.Globalization;
 using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Host.Harness;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;

@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 using RobotControl.Bus.Client;
-using RobotControl.Hardware.Exchange;
+using RobotControl.Definitions.Exchange;
 using RobotControl.Robot.Control;
 using RobotControl.Robot.Events;
 

@@ -1,5 +1,5 @@
 using RobotControl.Bus.Protocol;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Coupling;
 using RobotControl.Modules;
 

@@ -1,4 +1,4 @@
-using RobotControl.Hardware.Exchange;
+using RobotControl.Definitions.Exchange;
 
 namespace RobotControl.Robot.Bus;
 

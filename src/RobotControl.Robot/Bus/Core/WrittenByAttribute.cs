@@ -18,7 +18,7 @@ public enum RobotThread
 
 /// <summary>
 /// Says which thread writes the mutable state of a part of the robot core. Other threads only read it (through
-/// <see cref="Hardware.Exchange.SeqLock{T}"/>, volatile or interlocked reads) or ask for a change through a request
+/// <see cref="Definitions.Exchange.SeqLock{T}"/>, volatile or interlocked reads) or ask for a change through a request
 /// that the writing thread takes up (members named <c>Request…</c>, <c>Hold…</c> or <c>Raise…</c>).
 /// </summary>
 [AttributeUsage(AttributeTargets.Class, Inherited = false)]

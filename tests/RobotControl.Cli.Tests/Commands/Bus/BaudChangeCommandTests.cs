@@ -1,6 +1,6 @@
 using RobotControl.Bus.Client;
 using RobotControl.Cli.Commands.Bus;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 
 namespace RobotControl.Cli.Tests.Commands.Bus;
 

@@ -1,5 +1,5 @@
 using System.Globalization;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Modules;
 using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;

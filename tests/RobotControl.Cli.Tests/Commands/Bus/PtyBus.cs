@@ -1,7 +1,7 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports.Serial;
-using RobotControl.Hardware.Loading;
+using RobotControl.Definitions.Loading;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
 

@@ -2,8 +2,8 @@ using System.Text.RegularExpressions;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports;
-using RobotControl.Hardware.Loading;
-using RobotControl.Hardware.Model;
+using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 
 namespace RobotControl.Cli.Tests.Commands.Run;
 
