@@ -77,10 +77,10 @@ public sealed record LinkUri
     public Rs485DriverEnable Rs485 => Options.TryGetValue("rs485", out var v) ? Enum.Parse<Rs485DriverEnable>(v, ignoreCase: true) : Rs485DriverEnable.Auto;
 
     /// <summary>Parses a transport string.</summary>
-    /// <exception cref="FormatException">The string names no known kind or its target or options are malformed.</exception>
+    /// <exception cref="FormatException">The string is empty, names no known kind, or its target or options are malformed.</exception>
     public static LinkUri Parse(string text)
     {
-        ArgumentException.ThrowIfNullOrWhiteSpace(text);
+        ArgumentNullException.ThrowIfNull(text);
         var colon = text.IndexOf(':', StringComparison.Ordinal);
         if (colon <= 0)
         {

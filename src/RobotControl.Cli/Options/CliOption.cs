@@ -126,7 +126,29 @@ internal static class CliOption
     private static void Check(OptionResult result, string name, Func<string, string?> check)
     {
         var token = result.Tokens.Count > 0 ? result.Tokens[^1].Value : null;
-        if (token is not null && check(Path.GetFullPath(token)) is { } problem)
+        if (token is null)
+        {
+            return;
+        }
+
+        if (string.IsNullOrWhiteSpace(token))
+        {
+            result.AddError($"{name}: the path is empty");
+            return;
+        }
+
+        string full;
+        try
+        {
+            full = Path.GetFullPath(token);
+        }
+        catch (Exception ex) when (ex is ArgumentException or NotSupportedException or PathTooLongException)
+        {
+            result.AddError($"{name}: '{token}' is not a usable path ({ex.Message})");
+            return;
+        }
+
+        if (check(full) is { } problem)
         {
             result.AddError($"{name}: {problem}");
         }

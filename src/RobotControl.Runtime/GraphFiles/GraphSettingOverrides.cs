@@ -66,20 +66,27 @@ public static class GraphSettingOverrides
                 instance["settings"] = settings;
             }
 
-            settings[item.Setting] = Value(item, instance, catalog);
+            if (Value(item, instance, catalog) is not { } value)
+            {
+                problems.Add(new JsonProblem($"--set {item}", $"'{item.Value.Trim()}' is not a finite number"));
+                continue;
+            }
+
+            settings[item.Setting] = value;
         }
 
         return root.ToJsonString();
     }
 
-    private static JsonValue Value(SettingOverride item, JsonObject instance, PluginCatalog catalog)
+    /// <summary>The override's JSON value, or null for a number setting given a non-finite number (NaN, Infinity), which JSON cannot hold.</summary>
+    private static JsonValue? Value(SettingOverride item, JsonObject instance, PluginCatalog catalog)
     {
         var type = instance["type"] is JsonValue t && t.TryGetValue<string>(out var name) ? catalog.Find(name) : null;
         var kind = type?.Settings?.Find(item.Setting)?.Kind;
         var text = item.Value.Trim();
         return kind switch
         {
-            SettingKind.Number when double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var d) => JsonValue.Create(d),
+            SettingKind.Number when double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var d) => double.IsFinite(d) ? JsonValue.Create(d) : null,
             SettingKind.Integer when long.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out var i) => JsonValue.Create(i),
             SettingKind.Boolean when bool.TryParse(text, out var b) => JsonValue.Create(b),
             _ => JsonValue.Create(item.Value),

@@ -30,6 +30,8 @@ public sealed class LinkUriTests
 
     [Theory]
     [InlineData("ttyUSB0", "expected kind:target")]
+    [InlineData("", "expected kind:target")]
+    [InlineData("   ", "expected kind:target")]
     [InlineData("modem:/dev/x", "unknown kind")]
     [InlineData("serial:/dev/x?baud=fast", "baud")]
     [InlineData("serial:/dev/x?speed=9600", "unknown option")]

@@ -56,6 +56,19 @@ public sealed class GraphSettingOverridesTests
         Assert.Contains(problems, p => p.StartsWith("$.instances[0].settings.nope: unknown setting", StringComparison.Ordinal));
     }
 
+    [Theory]
+    [InlineData("NaN")]
+    [InlineData("Infinity")]
+    [InlineData("-Infinity")]
+    public void A_non_finite_number_for_a_number_setting_is_named_with_its_override(string value)
+    {
+        var ex = Assert.Throws<GraphException>(() => Load($"a.ratio={value}"));
+
+        var problem = Assert.Single(ex.Problems);
+        Assert.Equal($"--set a.ratio={value}", problem.Path);
+        Assert.Equal($"'{value}' is not a finite number", problem.Message);
+    }
+
     [Fact]
     public void An_unknown_instance_is_named_with_the_instances_there_are()
     {

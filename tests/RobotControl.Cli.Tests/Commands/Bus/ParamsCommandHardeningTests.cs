@@ -41,6 +41,12 @@ public sealed class ParamsCommandHardeningTests
         Assert.Equal(300, bus.Read(2, "kp", 0));
     }
 
+    [Theory]
+    [InlineData("params", "get")]
+    [InlineData("discover")]
+    public void An_empty_transport_is_one_line_saying_what_a_transport_looks_like(params string[] command) =>
+        Cli.AssertRefused(Cli.Run([.. command, ""]), "transport '': expected kind:target");
+
     [Fact]
     public void A_module_id_outside_the_bus_range_is_refused_while_parsing() =>
         Cli.AssertRefused(Cli.Run("params", "set", "virtual:" + Cli.RepoFile("hardware/robots/lb-1.0.json"), "--module", "257", "--field", "kp", "--value", "3"), "--module: 257 is outside 0 to 252");

@@ -56,6 +56,17 @@ public sealed class RunCommandHardeningTests : IDisposable
         Assert.Equal(string.Empty, result.Output);
     }
 
+    [Theory]
+    [InlineData("")]
+    [InlineData("   ")]
+    public void An_empty_report_path_is_one_line_naming_the_option(string report)
+    {
+        var result = Cli.Run("run", Graph, "--virtual", "--duration", "10ms", "--report", report);
+
+        Cli.AssertRefused(result, "--report: the path is empty");
+        Assert.Equal(string.Empty, result.Output);
+    }
+
     [Fact]
     public void The_report_is_written_whole_under_its_name_and_nothing_else_is_left()
     {
