@@ -57,6 +57,16 @@ public enum SafeState
     TorqueOff,
 }
 
+/// <summary>Kinds of checks.</summary>
+public static class SafetyCheckKinds
+{
+    /// <summary>
+    /// True for the checks that time a silence (the host's, the loop's, a module's): graded against the modules'
+    /// torque-off stage, and counted apart from the loop's deadline misses.
+    /// </summary>
+    public static bool IsSilence(this SafetyCheck check) => check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent;
+}
+
 /// <summary>Report names of checks and safe states.</summary>
 public static class SafetyNames
 {

@@ -152,7 +152,7 @@ public sealed partial class SafetySupervisor
 
         // After an E-STOP that only silences caused (a host stall past the modules' torque-off stage, the modules' own
         // watchdog), with no module reporting a lost position, the pots may confirm the positions instead of homing.
-        _homing.AfterReset(silencesOnly: Trips.Where(t => !t.Soft).All(t => TripGrading.IsSilence(t.Check) || t.Check == SafetyCheck.ModuleFault));
+        _homing.AfterReset(silencesOnly: Trips.Where(t => !t.Soft).All(t => t.Check.IsSilence() || t.Check == SafetyCheck.ModuleFault));
         _robot.ClearFaultsNow(); // before anything else may ask for motors on
         _trips.Reset();
 

@@ -23,9 +23,6 @@ internal sealed class TripGrading
     /// <summary>The modules' torque-off stage, ms: they switch their motors off after this much silence.</summary>
     public double TorqueOffStageMs { get; }
 
-    /// <summary>The checks that time a silence (the host's, the loop's, a module's), graded against the modules' torque-off stage.</summary>
-    public static bool IsSilence(SafetyCheck check) => check is SafetyCheck.HostStall or SafetyCheck.DeadlineMiss or SafetyCheck.ModuleSilent;
-
     /// <summary>The robot file's safe state of <paramref name="check"/>.</summary>
     public SafeState SafeStateOf(SafetyCheck check) => _safeStates[(int)check];
 
@@ -33,7 +30,7 @@ internal sealed class TripGrading
     public (SafeState Action, double Limit, bool Soft) Grade(SafetyCheck check, double measured, double limit)
     {
         var action = _safeStates[(int)check];
-        var silence = IsSilence(check);
+        var silence = check.IsSilence();
         if (silence && measured >= TorqueOffStageMs)
         {
             return (SafeState.TorqueOff, TorqueOffStageMs, false);

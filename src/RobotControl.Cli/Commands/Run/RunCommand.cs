@@ -1,3 +1,4 @@
+using RobotControl.Definitions.Model;
 using System.CommandLine;
 using System.Globalization;
 using RobotControl.Cli.Options;
@@ -182,10 +183,19 @@ internal sealed class RunCommand : ICliCommand
         return result!;
     }
 
+    /// <summary>The silences the supervisor timed (host stalls, a loop behind, silent modules), which the deadline misses do not count: their number and the longest.</summary>
+    private static string Silences(RunReport r)
+    {
+        var silences = (r.Safety?.Trips ?? []).Where(t => t.Check.IsSilence()).ToList();
+        return silences.Count == 0
+            ? string.Empty
+            : string.Create(CultureInfo.InvariantCulture, $"; {silences.Count} silence trip(s), longest {silences.Max(t => t.Measured):0.#} ms ({silences.MaxBy(t => t.Measured)!.Check.Name()})");
+    }
+
     private static void Summarise(RunReport r, TextWriter output)
     {
         var c = CultureInfo.InvariantCulture;
-        output.WriteLine(string.Create(c, $"summary: {r.Ticks} ticks in {r.DurationSeconds:F3} s of loop time, {r.DeadlineMisses} deadline misses"));
+        output.WriteLine(string.Create(c, $"summary: {r.Ticks} ticks in {r.DurationSeconds:F3} s of loop time, {r.DeadlineMisses} deadline misses (ticks started late){Silences(r)}"));
         output.WriteLine(string.Create(c, $"  tick time (us): median {r.TickMedianUs:F1}, p99 {r.TickP99Us:F1}, max {r.TickMaxUs:F1}"));
         output.WriteLine(string.Create(c, $"  tracking error (mm): rms {r.TrackingRmsMm:F3}, max {r.TrackingMaxMm:F3}"));
         output.WriteLine(string.Create(c, $"  bus: {r.Bus.Frames} frames, {r.Bus.CrcErrors} CRC errors, {r.Bus.Timeouts} timeouts, {r.Bus.Retries} retries, {r.Bus.LateReplies} late replies"));

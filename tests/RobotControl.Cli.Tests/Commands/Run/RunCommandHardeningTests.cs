@@ -68,6 +68,15 @@ public sealed class RunCommandHardeningTests : IDisposable
     }
 
     [Fact]
+    public void A_stall_is_counted_in_the_summary_beside_the_deadline_misses_and_says_what_each_counts()
+    {
+        var (code, output, error) = Cli.Run("run", Graph, "--virtual", "--duration", "1500ms", "--inject", "stall=600ms@1s", "--continue-on-fault");
+
+        Assert.True(code is 0 or 1, error);
+        Assert.Matches(@"summary: 1500 ticks in [\d.]+ s of loop time, 0 deadline misses \(ticks started late\); 1 silence trip\(s\), longest 60\d\.\d ms \(host_stall\)", output);
+    }
+
+    [Fact]
     public void The_report_is_written_whole_under_its_name_and_nothing_else_is_left()
     {
         var report = Path.Combine(_root, "report.json");
