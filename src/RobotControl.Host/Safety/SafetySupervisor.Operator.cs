@@ -27,8 +27,7 @@ public sealed partial class SafetySupervisor
     {
         if (Level == RunLevel.EStop)
         {
-            var trips = Trips;
-            var trip = trips.Count > 0 ? trips[0] : null;
+            var trip = _stopCause; // not the first trip listed: that may be a soft one, or one from before a reset
             throw new InvalidOperationException(trip is null
                 ? $"homing ({source}) refused: the run level is E_STOP; an operator reset comes first"
                 : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");

@@ -56,6 +56,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private OperatorPedal _lastPedal;
     private OperatorPedal _lastEmergencyStop;
     private EmergencyStopRequest? _stopRequest;
+    private SafetyTrip? _stopCause; // the trip that moved to E_STOP last
 
     /// <summary>A supervisor of <paramref name="robot"/> (discovered) at <see cref="RunLevel.Init"/>; it checks every cycle from now on.</summary>
     /// <param name="robot">The robot layer (its clock is the supervisor's).</param>
@@ -141,7 +142,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
             return;
         }
 
-        if (!_trips.TryRecord(now, check, joint, measured, limit, unit, action))
+        if (_trips.TryRecord(now, check, joint, measured, limit, unit, action) is not { } trip)
         {
             return;
         }
@@ -152,6 +153,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
 
         if (Level != RunLevel.EStop)
         {
+            _stopCause = trip;
             _levels.MoveTo(RunLevel.EStop, source, reason ?? $"{check.Name()} {joint}".TrimEnd() + $": {action.Name()}");
         }
     }
