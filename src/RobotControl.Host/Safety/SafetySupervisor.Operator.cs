@@ -35,9 +35,9 @@ public sealed partial class SafetySupervisor
 
         _levels.MoveTo(RunLevel.Homing, source, "homing from the joint pots");
         _robot.HoldAtMeasured();
-        if (_robot.State == RobotState.Enabled)
+        if (_robot.State is RobotState.Enabled or RobotState.Fault)
         {
-            _robot.EnableTorque(false);
+            _robot.EnableTorque(false); // from a fault too (a module reset while the motors were off): homing needs the motors off
         }
 
         var byPots = _confirmByPots;
@@ -45,9 +45,7 @@ public sealed partial class SafetySupervisor
         var lost = _mustRehome ? _motorChecks.Count : byPots ? Math.Max(PositionsInDoubt(), _motorChecks.PotsNotConfirming()) : PositionsInDoubt();
         if (lost == 0)
         {
-            _robot.HoldAtMeasured();
-            _robot.EnableTorque(true);
-            _torqueOffTaken = false;
+            MotorsOnHolding();
             _levels.MoveTo(RunLevel.PedalUp, source, byPots
                 ? "after an E-STOP from a stall, the pots confirm every position: not re-homed; motors on, holding"
                 : "no module reports a lost position or a pot mismatch: not re-homed; motors on, holding");
@@ -64,11 +62,22 @@ public sealed partial class SafetySupervisor
         }
 
         _mustRehome = false;
+        MotorsOnHolding();
+        _levels.MoveTo(RunLevel.PedalUp, source, $"{results.Count} motors homed and verified ({(lost == _motorChecks.Count ? "after a reset" : $"{lost} had lost their position")}); motors on, holding");
+        return results;
+    }
+
+    /// <summary>
+    /// Motors on, holding the positions measured now. The hold is asked afresh: the robot has held since before homing
+    /// (at INIT it always holds), at positions that homing (or a joint turned while off) may have changed since, and
+    /// holding those would drive the motors back to them.
+    /// </summary>
+    private void MotorsOnHolding()
+    {
+        _robot.ReleaseHold();
         _robot.HoldAtMeasured();
         _robot.EnableTorque(true);
         _torqueOffTaken = false;
-        _levels.MoveTo(RunLevel.PedalUp, source, $"{results.Count} motors homed and verified ({(lost == _motorChecks.Count ? "after a reset" : $"{lost} had lost their position")}); motors on, holding");
-        return results;
     }
 
     /// <summary>PEDAL_UP -> PEDAL_DOWN: teleoperation drives the arms (from the measured positions, under the step cap).</summary>
