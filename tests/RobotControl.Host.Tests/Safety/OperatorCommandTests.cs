@@ -2,6 +2,7 @@ using RobotControl.Hardware.Model;
 using RobotControl.Host.Safety;
 using RobotControl.Robot.Bus;
 using RobotControl.Robot.States;
+using RobotControl.TestSupport;
 
 namespace RobotControl.Host.Tests.Safety;
 
@@ -77,7 +78,7 @@ public sealed class OperatorCommandTests
     {
         using var lb = new SupervisedLb();
         var supervisor = lb.Supervisor;
-        OperatorStop(lb);
+        lb.StopNow();
         supervisor.Reset("console");
         Assert.Equal((RunLevel.EStop, RunLevel.Init, "console", "operator reset: motors off, faults cleared; homing needed before motion"), lb.LastMove);
         Assert.NotEqual(RobotState.Enabled, lb.Robot.State);
@@ -116,7 +117,7 @@ public sealed class OperatorCommandTests
     {
         using var lb = new SupervisedLb();
         var supervisor = lb.Supervisor;
-        OperatorStop(lb);
+        lb.StopNow();
         supervisor.Reset("console");
         lb.Sim.ScheduleTransmitBreak(3, lb.Sim.Elapsed); // the right forearm's module (2 motors) stops answering
 
@@ -156,7 +157,7 @@ public sealed class OperatorCommandTests
         supervisor.Reset("console");
         supervisor.Home("console");
         lb.Cycles(5);
-        OperatorStop(lb);
+        lb.StopNow();
         error = Assert.Throws<InvalidOperationException>(() => supervisor.Home("console"));
         Assert.Equal("homing (console) refused: E_STOP since the operator trip (0 , limit 0); an operator reset comes first", error.Message);
     }
@@ -171,7 +172,7 @@ public sealed class OperatorCommandTests
         Assert.Equal("reset (console) applies at E_STOP only, the run level is INIT", Assert.Throws<InvalidOperationException>(() => supervisor.Reset("console")).Message);
         supervisor.Home("console");
         Assert.Equal("reset (console) applies at E_STOP only, the run level is PEDAL_UP", Assert.Throws<InvalidOperationException>(() => supervisor.Reset("console")).Message);
-        OperatorStop(lb);
+        lb.StopNow();
         Assert.Equal("pedal down (console) needs the run level PEDAL_UP, it is E_STOP", Assert.Throws<InvalidOperationException>(() => supervisor.PedalDown("console")).Message);
         Assert.Equal(RunLevel.EStop, supervisor.Level);
     }
@@ -295,7 +296,7 @@ public sealed class OperatorCommandTests
         Assert.Equal("no module reports a lost position or a pot mismatch: not re-homed; motors on, holding", supervisor.History[^1].Reason);
 
         // At E_STOP with the motors held on (the operator's stop holds), they go off and the level stays.
-        OperatorStop(lb);
+        lb.StopNow();
         Assert.Equal(RobotState.Enabled, lb.Robot.State);
         supervisor.MotorsOff("console");
         Assert.Equal(RunLevel.EStop, supervisor.Level);
@@ -395,7 +396,7 @@ public sealed class OperatorCommandTests
         lb.FromAnotherThread(() => supervisor.MotorsOff("console"));
         Assert.Equal(RunLevel.Init, supervisor.Level);
         supervisor.Home("console");
-        OperatorStop(lb);
+        lb.StopNow();
         lb.FromAnotherThread(() => supervisor.Reset("console"));
         Assert.Equal(RunLevel.Init, supervisor.Level);
     }
@@ -417,6 +418,20 @@ public sealed class OperatorCommandTests
     }
 
     [Fact]
+    public void A_new_supervisor_makes_the_robot_hold_and_checks_its_cycles()
+    {
+        using var lb = new VirtualLb(start: false);
+        lb.Robot.Discover();
+        Assert.False(lb.Robot.IsHolding);
+
+        var supervisor = new SafetySupervisor(lb.Robot, SupervisedLb.FileLimits, SupervisedLb.LoopPeriod);
+
+        Assert.True(lb.Robot.IsHolding);
+        Assert.Same(supervisor, lb.Robot.CycleCheck);
+        Assert.Equal(RunLevel.Init, supervisor.Level);
+    }
+
+    [Fact]
     public void The_supervisor_needs_a_robot_limits_and_a_positive_loop_period()
     {
         using var lb = new SupervisedLb(home: false);
@@ -427,16 +442,5 @@ public sealed class OperatorCommandTests
         Assert.Same(limits, lb.Supervisor.Limits);
         Assert.Equal(SupervisedLb.LoopPeriod, lb.Supervisor.LoopPeriod);
         Assert.Same(lb.Robot, lb.Supervisor.Robot);
-    }
-
-    /// <summary>The operator's emergency stop, taken at once (on the bus's owner): E_STOP, holding.</summary>
-    private static void OperatorStop(SupervisedLb lb)
-    {
-        using (lb.Robot.OwnBus())
-        {
-            lb.Supervisor.EmergencyStop("console", "stop");
-        }
-
-        Assert.Equal(RunLevel.EStop, lb.Supervisor.Level);
     }
 }

@@ -59,6 +59,44 @@ public sealed class SafetyReportTests
     }
 
     [Fact]
+    public void The_report_of_a_supervisor_gives_its_levels_and_trips_in_seconds_from_its_origin()
+    {
+        using var lb = new SupervisedLb();
+        var supervisor = lb.Supervisor;
+        lb.Cycles(10);
+        var origin = lb.Clock.GetTimestamp();
+        supervisor.SetOrigin(origin);
+        Assert.Equal(origin, supervisor.Origin);
+        supervisor.PedalDown("console");
+        lb.CyclesFor(TimeSpan.FromMilliseconds(100));
+        lb.Stall(TimeSpan.FromMilliseconds(20));
+        var stallEnd = lb.Now;
+        lb.Cycles(1);
+        var end = lb.Now;
+
+        var report = SafetyReport.Of(supervisor, end, reEngagements: 3);
+
+        Assert.Equal(RunLevel.PedalUp, report.FinalRunLevel);
+        var history = supervisor.History;
+        Assert.Equal(history.Count, report.RunLevels.Count);
+        for (var i = 0; i < history.Count; i++)
+        {
+            var (h, l) = (history[i], report.RunLevels[i]);
+            Assert.Equal((h.From, h.To, h.Source, h.Reason), (l.From, l.To, l.Source, l.Reason));
+            Assert.Equal((h.Timestamp - origin) / (double)lb.Clock.TimestampFrequency, l.TimeSeconds, 12);
+        }
+
+        Assert.True(report.RunLevels[0].TimeSeconds < 0); // homing came before the origin
+        var trip = Assert.Single(report.Trips);
+        Assert.Equal((SafetyCheck.HostStall, string.Empty, 20.0, 10.0, "ms", SafeState.Hold, true), (trip.Check, trip.Joint, trip.Measured, trip.Limit, trip.Unit, trip.Action, trip.Soft));
+        Assert.Equal(stallEnd, trip.TimeSeconds, 12); // detected before the write after the stall
+        Assert.Equal(report.RunLevels[^1].TimeSeconds - report.RunLevels[^2].TimeSeconds, report.PedalDownSeconds, 12);
+        Assert.True(report.PedalDownSeconds > 0.1);
+        Assert.Equal((lb.Robot.StepCapHits, lb.Robot.LargestCappedStepRad, 3), (report.StepCapHits, report.LargestCappedStepRad, report.ReEngagements));
+        Assert.Equal("supervisor", Assert.Throws<ArgumentNullException>(() => SafetyReport.Of(null!)).ParamName);
+    }
+
+    [Fact]
     public void Write_refuses_no_writer()
     {
         var report = new SafetyReport(RunLevel.Init, [], [], 0, 0);

@@ -17,6 +17,15 @@ internal sealed class SupervisedLb : IDisposable
     /// <summary>The loop period the supervisor is given (the stall limit is 10 of them: 10 ms).</summary>
     public static readonly TimeSpan LoopPeriod = TimeSpan.FromMilliseconds(1);
 
+    /// <summary>A supervised LB at PEDAL_DOWN (<paramref name="limits"/>: default the robot file's), 5 cycles on.</summary>
+    public static SupervisedLb AtPedalDown(SafetyLimits? limits = null)
+    {
+        var lb = new SupervisedLb(limits);
+        lb.Supervisor.PedalDown("console");
+        lb.Cycles(5);
+        return lb;
+    }
+
     /// <summary>The LB's robot-file safety section.</summary>
     public static SafetyLimits FileLimits => ShippedRobots.Lb.Safety;
 
@@ -73,6 +82,17 @@ internal sealed class SupervisedLb : IDisposable
 
             Robot.RunCycle();
         }
+    }
+
+    /// <summary>The operator's emergency stop on the bus's owner (a console command between cycles): E_STOP at once.</summary>
+    public void StopNow()
+    {
+        using (Robot.OwnBus())
+        {
+            Supervisor.EmergencyStop("console", "stop");
+        }
+
+        Assert.Equal(RunLevel.EStop, Supervisor.Level);
     }
 
     /// <summary>The graph's pedal is lifted for a cycle, then pressed for one (a press the supervisor sees as an edge).</summary>
