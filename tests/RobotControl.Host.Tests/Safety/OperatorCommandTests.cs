@@ -335,10 +335,25 @@ public sealed class OperatorCommandTests
 
         var trip = Assert.Single(supervisor.Trips);
         Assert.Equal((SafetyCheck.Operator, string.Empty, 0.0, 0.0, string.Empty, SafeState.Hold, false), (trip.Check, trip.Joint, trip.Measured, trip.Limit, trip.Unit, trip.Action, trip.Soft));
-        Assert.Equal("reason", Assert.Throws<ArgumentException>(() => supervisor.EmergencyStop("console", " ")).ParamName);
         lb.Cycles(5);
         Assert.Equal(RobotState.Enabled, lb.Robot.State); // hold: the motors stay on
         Assert.False(supervisor.MotorsTrippedOff);
+    }
+
+    [Fact]
+    public void An_emergency_stop_without_a_source_or_a_reason_is_refused_and_changes_nothing()
+    {
+        using var lb = SupervisedLb.AtPedalDown();
+        var supervisor = lb.Supervisor;
+
+        Assert.Equal("reason", Assert.Throws<ArgumentException>(() => supervisor.EmergencyStop("console", " ")).ParamName);
+        Assert.Equal("source", Assert.Throws<ArgumentException>(() => supervisor.EmergencyStop(" ", "stop")).ParamName);
+
+        Assert.False(lb.Robot.IsHolding);
+        Assert.False(lb.Robot.StopPending);
+        lb.Cycles(3);
+        Assert.Equal(RunLevel.PedalDown, supervisor.Level);
+        Assert.Empty(supervisor.Trips);
     }
 
     [Fact]

@@ -28,6 +28,17 @@ public sealed class TripGradingTests
     }
 
     [Fact]
+    public void A_host_stall_of_exactly_the_stall_limit_is_nothing()
+    {
+        using var lb = SupervisedLb.AtPedalDown();
+        lb.Stall(10 * SupervisedLb.LoopPeriod);
+        lb.Cycles(5);
+
+        Assert.Empty(lb.Supervisor.Trips);
+        Assert.Equal(RunLevel.PedalDown, lb.Supervisor.Level);
+    }
+
+    [Fact]
     public void A_host_stall_of_exactly_the_torque_off_stage_is_an_e_stop_with_the_motors_off()
     {
         using var lb = SupervisedLb.AtPedalDown();
@@ -104,6 +115,19 @@ public sealed class TripGradingTests
         var trip = Assert.Single(lb.Supervisor.Trips, t => t.Check == SafetyCheck.ModuleSilent);
         Assert.Equal(("left.upper_arm", 10.0, "ms", SafeState.TorqueOff, false), (trip.Joint, trip.Limit, trip.Unit, trip.Action, trip.Soft));
         Assert.InRange(trip.Measured, 10.001, 14);
+    }
+
+    [Fact]
+    public void A_silent_module_trips_when_its_silence_exceeds_module_silent_ms()
+    {
+        // 30 ms: longer than one cycle with the silent module's timeouts (about 11 ms), so the limit decides.
+        using var lb = new SupervisedLb(SupervisedLb.FileLimits with { ModuleSilentMs = 30 });
+        lb.Sim.ScheduleTransmitBreak(12, lb.Sim.Elapsed);
+        lb.CyclesUntil(() => lb.Supervisor.Trips.Any(t => t.Check == SafetyCheck.ModuleSilent), TimeSpan.FromMilliseconds(80));
+
+        var trip = lb.Supervisor.Trips.Single(t => t.Check == SafetyCheck.ModuleSilent);
+        Assert.Equal(("left.upper_arm", 30.0, "ms", SafeState.Hold, true), (trip.Joint, trip.Limit, trip.Unit, trip.Action, trip.Soft));
+        Assert.InRange(trip.Measured, 30.001, 45); // the first check after 30 ms of silence (a cycle lasts about 11 ms)
     }
 
     [Fact]
