@@ -12,16 +12,12 @@ namespace RobotControl.Host.Safety;
 /// </summary>
 public sealed partial class SafetySupervisor
 {
-    /// <summary>
-    /// INIT -> HOMING -> PEDAL_UP: motors off; homed from the pots and verified where positions may be lost (after a
-    /// <see cref="Reset"/>, unless only silences caused the E-STOP and every pot confirms its motor's position;
-    /// otherwise when a motor's module reports position lost or a pot mismatch); motors on, holding the measured
-    /// positions. Homing that does not verify every motor returns to INIT.
-    /// </summary>
+    /// <summary>INIT -> HOMING -> PEDAL_UP, re-homing from the pots where positions may be lost (<see cref="SupervisedHoming"/>); back to INIT when it cannot.</summary>
     /// <exception cref="InvalidOperationException">Not at INIT, or homing incomplete (the message says how many motors failed).</exception>
+    /// <exception cref="IOException">A module refused the motors on (the message names it).</exception>
     public IReadOnlyList<HomingResult> Home(string source) => _robot.Slot.Run($"homing ({source})", () =>
     {
-        var results = _homing.Run(source);
+        var results = _homing.Run(source, _stopCause); // refused at E_STOP naming the trip that caused it
         _torqueOffTaken = false;
         return results;
     });

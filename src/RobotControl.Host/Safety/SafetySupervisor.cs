@@ -7,9 +7,8 @@ namespace RobotControl.Host.Safety;
 
 /// <summary>
 /// Owns the question "is it safe to move?": the run level (<see cref="RunLevels.NewMachine"/>), the operator's commands
-/// (home, pedal, emergency stop, reset) and the per-cycle checks, the cycle's step <b>check</b> after read and publish
-/// (<see cref="BusRobot.Check"/>), allocation-free while nothing trips. Outside
-/// <see cref="RunLevel.PedalDown"/> the robot holds (goals frozen at the measured positions: teleoperation is
+/// (home, pedal, emergency stop, reset) and the per-cycle checks, the cycle's step <b>check</b> (<see cref="BusRobot.Check"/>),
+/// allocation-free while nothing trips. Outside <see cref="RunLevel.PedalDown"/> the robot holds (teleoperation is
 /// ignored); every goal is under the robot layer's step cap. A trip records what crossed which limit, puts the robot
 /// in the check's safe state (<see cref="SafetyLimits.SafeStateOf"/>) and moves to <see cref="RunLevel.EStop"/>;
 /// nothing leaves it but an operator <see cref="Reset"/>, after which the robot must be homed again (unless only
@@ -48,6 +47,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private OperatorPedal _lastPedal;
     private OperatorPedal _lastEmergencyStop;
     private EmergencyStopRequest? _stopRequest;
+    private SafetyTrip? _stopCause; // the trip that moved to E_STOP last
 
     /// <summary>A supervisor of <paramref name="robot"/> (discovered) at <see cref="RunLevel.Init"/>; it checks every cycle from now on.</summary>
     /// <param name="robot">The robot layer (its clock is the supervisor's).</param>
@@ -67,7 +67,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         TripRecorder trip = (check, joint, measured, limit, unit, now) => Trip(check, joint, measured, limit, unit, now);
         _motorChecks = new MotorChecks(robot, limits, trip);
         _moduleChecks = new ModuleChecks(robot, limits, trip);
-        _homing = new SupervisedHoming(robot, _motorChecks, _levels, _trips);
+        _homing = new SupervisedHoming(robot, _motorChecks, _levels);
         _inputs = new OperatorInputs(robot.ArmCount, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
         _clock = new StallClock(_time, (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * _time.TimestampFrequency), _inputs);
         Origin = _time.GetTimestamp();
@@ -92,6 +92,9 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
 
     /// <summary>Every trip, oldest first (a copy).</summary>
     public IReadOnlyList<SafetyTrip> Trips => _trips.All;
+
+    /// <summary>What the loop's thread reported (tests read the input ages from it).</summary>
+    internal OperatorInputs Inputs => _inputs;
 
     /// <summary>The robot layer supervised.</summary>
     public BusRobot Robot => _robot;
@@ -119,7 +122,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
             return;
         }
 
-        if (!_trips.TryRecord(now, check, joint, measured, limit, unit, action))
+        if (_trips.TryRecord(now, check, joint, measured, limit, unit, action) is not { } trip)
         {
             return;
         }
@@ -130,6 +133,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
 
         if (Level != RunLevel.EStop)
         {
+            _stopCause = trip;
             _levels.MoveTo(RunLevel.EStop, source, reason ?? $"{check.Name()} {joint}".TrimEnd() + $": {action.Name()}");
         }
     }

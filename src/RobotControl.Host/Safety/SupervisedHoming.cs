@@ -20,13 +20,11 @@ internal sealed class SupervisedHoming
     private readonly RobotController[] _controllers;
     private readonly MotorChecks _motors;
     private readonly StateMachine<RunLevel> _levels;
-    private readonly TripLog _trips;
     private bool _mustRehome;
     private bool _confirmByPots;
 
-    public SupervisedHoming(BusRobot robot, MotorChecks motors, StateMachine<RunLevel> levels, TripLog trips)
+    public SupervisedHoming(BusRobot robot, MotorChecks motors, StateMachine<RunLevel> levels)
     {
-        _trips = trips;
         _robot = robot;
         _controllers = [.. robot.Controllers];
         _motors = motors;
@@ -47,12 +45,13 @@ internal sealed class SupervisedHoming
     /// </summary>
     /// <exception cref="InvalidOperationException">At E_STOP (the message names its first trip), or homing incomplete (the message says how many motors failed and the first).</exception>
     /// <exception cref="IOException">A module refused (the message names it).</exception>
-    public IReadOnlyList<HomingResult> Run(string source)
+    /// <param name="source">Who asked.</param>
+    /// <param name="stopCause">The trip that moved the run level to E_STOP (not the first listed: that may be a soft one, or one from before a reset).</param>
+    public IReadOnlyList<HomingResult> Run(string source, SafetyTrip? stopCause)
     {
         if (_levels.Current == RunLevel.EStop)
         {
-            var trips = _trips.All;
-            var trip = trips.Count > 0 ? trips[0] : null;
+            var trip = stopCause;
             throw new InvalidOperationException(trip is null
                 ? $"homing ({source}) refused: the run level is E_STOP; an operator reset comes first"
                 : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");
@@ -78,9 +77,9 @@ internal sealed class SupervisedHoming
             _robot.AcknowledgeHoldsNow(); // homing is the operator's request for motion: the modules follow again, from where they hold
         }
 
-        if (_robot.State == RobotState.Enabled)
+        if (_robot.State is RobotState.Enabled or RobotState.Fault)
         {
-            _robot.EnableTorque(false);
+            _robot.EnableTorque(false); // from a fault too (a module reset while the motors were off): homing needs the motors off
         }
 
         var byPots = _confirmByPots;
@@ -88,8 +87,7 @@ internal sealed class SupervisedHoming
         var lost = _mustRehome ? _motors.Count : byPots ? Math.Max(PositionsInDoubt(), _motors.PotsNotConfirming()) : PositionsInDoubt();
         if (lost == 0)
         {
-            _robot.HoldAtMeasured();
-            _robot.EnableTorque(true);
+            MotorsOnHolding();
             _levels.MoveTo(RunLevel.PedalUp, source, byPots
                 ? "after an E-STOP from a stall, the pots confirm every position: not re-homed; motors on, holding"
                 : "no module reports a lost position or a pot mismatch: not re-homed; motors on, holding");
@@ -106,10 +104,21 @@ internal sealed class SupervisedHoming
         }
 
         _mustRehome = false;
-        _robot.HoldAtMeasured();
-        _robot.EnableTorque(true);
+        MotorsOnHolding();
         _levels.MoveTo(RunLevel.PedalUp, source, $"{results.Count} motors homed and verified ({(lost == _motors.Count ? "after a reset" : $"{lost} had lost their position")}); motors on, holding");
         return results;
+    }
+
+    /// <summary>
+    /// Motors on, holding the positions measured now. The hold is asked afresh: the robot has held since before homing
+    /// (at INIT it always holds), at positions that homing (or a joint turned while off) may have changed since, and
+    /// holding those would drive the motors back to them.
+    /// </summary>
+    private void MotorsOnHolding()
+    {
+        _robot.ReleaseHold();
+        _robot.HoldAtMeasured();
+        _robot.EnableTorque(true);
     }
 
     /// <summary>

@@ -29,9 +29,9 @@ internal sealed class TripLog
         }
     }
 
-    /// <summary>Records a trip of <paramref name="check"/> unless it tripped since the last reset; false: already recorded.</summary>
-    public bool TryRecord(long now, SafetyCheck check, string joint, double measured, double limit, string unit, SafeState action) =>
-        TryRecord(_tripped, now, check, joint, measured, limit, unit, action, soft: false) is not null;
+    /// <summary>Records a trip of <paramref name="check"/> unless it tripped since the last reset; null: already recorded.</summary>
+    public SafetyTrip? TryRecord(long now, SafetyCheck check, string joint, double measured, double limit, string unit, SafeState action) =>
+        TryRecord(_tripped, now, check, joint, measured, limit, unit, action, soft: false);
 
     /// <summary>Records a soft trip of <paramref name="check"/> unless one was recorded this episode; null: already recorded.</summary>
     public SafetyTrip? TryRecordSoft(long now, SafetyCheck check, string joint, double measured, double limit, string unit) =>
