@@ -131,10 +131,8 @@ public sealed class OperatorCommandTests
     [Fact]
     public void At_e_stop_homing_is_refused_naming_the_trip_that_caused_it()
     {
-        using var lb = new SupervisedLb();
+        using var lb = SupervisedLb.AtPedalDown();
         var supervisor = lb.Supervisor;
-        supervisor.PedalDown("console");
-        lb.Cycles(10);
 
         // A soft trip first (stale master data: back to PEDAL_UP), then the over-current that makes it E_STOP.
         supervisor.ReportInputAge(1, 80);
@@ -273,10 +271,8 @@ public sealed class OperatorCommandTests
     [Fact]
     public void Motors_off_from_pedal_down_passes_pedal_up_to_init_and_at_init_or_e_stop_only_turns_the_motors_off()
     {
-        using var lb = new SupervisedLb();
+        using var lb = SupervisedLb.AtPedalDown();
         var supervisor = lb.Supervisor;
-        supervisor.PedalDown("console");
-        lb.Cycles(5);
         supervisor.MotorsOff("console");
         Assert.Equal(
             [
@@ -306,10 +302,8 @@ public sealed class OperatorCommandTests
     [Fact]
     public void Motors_off_at_e_stop_after_a_module_fault_turns_them_off_too()
     {
-        using var lb = new SupervisedLb();
+        using var lb = SupervisedLb.AtPedalDown();
         var supervisor = lb.Supervisor;
-        supervisor.PedalDown("console");
-        lb.Cycles(10);
         lb.Stall(TimeSpan.FromMilliseconds(600)); // past the modules' torque-off stage: they switch off and latch it
         lb.Cycles(20);
         Assert.Equal((RunLevel.EStop, RobotState.Fault), (supervisor.Level, lb.Robot.State));
@@ -322,10 +316,8 @@ public sealed class OperatorCommandTests
     [Fact]
     public void An_emergency_stop_on_the_bus_thread_is_an_e_stop_at_once_with_the_operator_s_source_and_reason()
     {
-        using var lb = new SupervisedLb();
+        using var lb = SupervisedLb.AtPedalDown();
         var supervisor = lb.Supervisor;
-        supervisor.PedalDown("console");
-        lb.Cycles(5);
 
         using (lb.Robot.OwnBus())
         {
@@ -359,10 +351,8 @@ public sealed class OperatorCommandTests
     [Fact]
     public void An_emergency_stop_asked_for_off_the_bus_thread_is_taken_at_the_next_check()
     {
-        using var lb = new SupervisedLb();
+        using var lb = SupervisedLb.AtPedalDown();
         var supervisor = lb.Supervisor;
-        supervisor.PedalDown("console");
-        lb.Cycles(5);
         Assert.False(lb.Robot.IsHolding);
 
         supervisor.EmergencyStop("cli", "E-STOP key"); // nobody owns the bus: a request

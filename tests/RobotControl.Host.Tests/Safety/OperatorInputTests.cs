@@ -102,10 +102,8 @@ public sealed class OperatorInputTests
     [Fact]
     public void A_master_speed_beyond_a_hand_s_holds_at_once_and_is_a_soft_trip_at_the_next_check_once_per_episode()
     {
-        using var lb = new SupervisedLb();
+        using var lb = SupervisedLb.AtPedalDown();
         var supervisor = lb.Supervisor;
-        supervisor.PedalDown("console");
-        lb.Cycles(5);
         Assert.True(supervisor.ReportInputSpeed(1, 2000)); // exactly the limit: a hand can
         Assert.False(lb.Robot.IsHolding);
 
