@@ -54,6 +54,8 @@ internal sealed class SupervisedHoming
             var trip = stopCause;
             throw new InvalidOperationException(trip is null
                 ? $"homing ({source}) refused: the run level is E_STOP; an operator reset comes first"
+                : trip.Check == SafetyCheck.Operator
+                ? $"homing ({source}) refused: E_STOP by an operator's emergency stop; an operator reset comes first"
                 : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");
         }
 

@@ -65,7 +65,14 @@ public sealed class OperatorCommandTests
         var at = elbow.PositionRad;
         Assert.InRange(at - axis.OutputAngleRad, -0.01, 0.01);
 
-        // Held where the elbow is now, not where it was before it turned: no motion back, no tracking error.
+        // Held where the elbow is now, not where it was before it turned: no motion back, no tracking error; from the
+        // first write on (the step cap starts at the re-homed position, not at the goal sent before homing).
+        for (var cycle = 0; cycle < 50; cycle++)
+        {
+            lb.Cycles(1);
+            Assert.InRange(lb.Robot.SentGoalRad(elbow) - at, -0.01, 0.01);
+        }
+
         lb.CyclesFor(TimeSpan.FromMilliseconds(600));
         Assert.Equal(at, lb.Robot.SentGoalRad(elbow));
         Assert.InRange(elbow.PositionRad - at, -0.01, 0.01);
@@ -157,7 +164,7 @@ public sealed class OperatorCommandTests
         lb.Cycles(5);
         lb.StopNow();
         error = Assert.Throws<InvalidOperationException>(() => supervisor.Home("console"));
-        Assert.Equal("homing (console) refused: E_STOP since the operator trip (0 , limit 0); an operator reset comes first", error.Message);
+        Assert.Equal("homing (console) refused: E_STOP by an operator's emergency stop; an operator reset comes first", error.Message);
     }
 
     [Fact]

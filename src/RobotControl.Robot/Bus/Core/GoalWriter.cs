@@ -31,6 +31,7 @@ internal sealed class GoalWriter
     private readonly double[] _jaw = new double[1];
     private long _lastWrite;
     private bool _capPrimed;
+    private int _seedSeen; // the seed generation the step cap last restarted at
     private volatile int _hold; // 0: none, 1: asked at the measured positions, 3: asked at the goals sent (captured at the next write), 2: holding
     private volatile string? _torqueOffRequest;
     private volatile bool _clearRequested;
@@ -224,6 +225,17 @@ internal sealed class GoalWriter
     /// <summary>The hold and the step cap (no goal moves further in one write than the motor's speed limit times the time since the last).</summary>
     private void CapAndHold(double dt)
     {
+        if (_seed.Generation != _seedSeen)
+        {
+            // The motors went on (from where they are, e.g. just re-homed): the cap starts there, not from the goals
+            // sent before, which a re-homing may have left far off (a ramp from there would move the wrong way).
+            _seedSeen = _seed.Generation;
+            foreach (var m in _layout.Motors)
+            {
+                Volatile.Write(ref _sent[m.Index], m.PositionRad);
+            }
+        }
+
         var asked = _hold;
         if (asked is 1 or 3)
         {
