@@ -82,13 +82,14 @@ public sealed class GraphProgram
             return (_outputStart[s] + _order[s].IndexOfOutput(fromPort), inputStart[t] + _order[t].IndexOfInput(toPort), s, t);
         }
 
-        var resolved = wires.Select(Resolve).ToArray();
+        var resolved = wires.Select(w => (w.Delayed, Slots: Resolve(w))).ToArray();
+        var wiredInputs = resolved.ToLookup(r => r.Slots.TargetNode, r => r.Slots.Target - inputStart[r.Slots.TargetNode]);
         for (var i = 0; i < n; i++)
         {
-            _order[i].MarkWired(resolved.Where(r => r.TargetNode == i).Select(r => r.Target - inputStart[i]));
+            _order[i].MarkWired(wiredInputs[i]);
         }
 
-        var direct = wires.Where(w => !w.Delayed).Select(Resolve).OrderBy(r => r.TargetNode).ToArray();
+        var direct = resolved.Where(r => !r.Delayed).Select(r => r.Slots).OrderBy(r => r.TargetNode).ToArray();
         _wireStart = new int[n + 1];
         foreach (var r in direct)
         {
@@ -103,7 +104,7 @@ public sealed class GraphProgram
         _wireSource = [.. direct.Select(r => r.Source)];
         _wireTarget = [.. direct.Select(r => r.Target)];
         _wireSourceNode = [.. direct.Select(r => r.SourceNode)];
-        var delayed = wires.Where(w => w.Delayed).Select(Resolve).ToArray();
+        var delayed = resolved.Where(r => r.Delayed).Select(r => r.Slots).ToArray();
         _delayedSource = [.. delayed.Select(r => r.Source)];
         _delayedTarget = [.. delayed.Select(r => r.Target)];
         _delayedSourceNode = [.. delayed.Select(r => r.SourceNode)];

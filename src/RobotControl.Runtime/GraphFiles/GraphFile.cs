@@ -257,7 +257,6 @@ public static class GraphFile
             return null;
         }
 
-        robotNode?.SetDriven(wires.Select(w => w.To));
         var document = new GraphDocument(robotPath, transport, rate, instances, wires) { Layout = layout };
         return new LoadedGraph(fullPath, document, robot, robotNode, graph, program);
     }

@@ -43,8 +43,8 @@ public sealed class RobotNode : Plugin
     private readonly double[] _currentValues;
     private readonly double[][] _commanded;
     private readonly bool[] _commandedThisTick;
-    private bool[] _armDriven;
-    private bool[] _jawDriven;
+    private readonly bool[] _armDriven; // which arms and jaws have wired setpoints, and whether the pedals are wired: from the graph, at Start
+    private readonly bool[] _jawDriven;
     private bool _pedalWired;
     private bool _estopWired;
     private IRobotPort? _port;
@@ -145,6 +145,14 @@ public sealed class RobotNode : Plugin
             }
         }
 
+        for (var a = 0; a < _setpoints.Length; a++)
+        {
+            _armDriven[a] = _setpoints[a].Any(IsWired);
+            _jawDriven[a] = IsWired(_jaws[a]);
+        }
+
+        _pedalWired = IsWired(_pedal);
+        _estopWired = IsWired(_estop);
         PublishFeedback(port); // what the first tick's delayed wires carry (e.g. into an IK that starts where the arm is)
         Write(_faults, (int)port.Faults);
         TeleopEnabled = _operator?.TeleopAllowed ?? true;
@@ -241,15 +249,5 @@ public sealed class RobotNode : Plugin
                 Write(_currents[a][m], _currentValues[m]);
             }
         }
-    }
-
-    /// <summary>Marks which arms and jaws have wired setpoints (from the graph's wires).</summary>
-    internal void SetDriven(IEnumerable<string> wiredInputs)
-    {
-        var wired = wiredInputs.ToHashSet(StringComparer.Ordinal);
-        _armDriven = [.. _robot.Arms.Select(arm => _robot.Joints.Any(j => wired.Contains($"{InstanceName}.{arm.Name}.{j.Name}")))];
-        _jawDriven = [.. _robot.Arms.Select(arm => wired.Contains($"{InstanceName}.{arm.Name}.jaw"))];
-        _pedalWired = wired.Contains($"{InstanceName}.pedal");
-        _estopWired = wired.Contains($"{InstanceName}.estop");
     }
 }

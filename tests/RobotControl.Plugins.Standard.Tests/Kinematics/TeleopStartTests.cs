@@ -77,7 +77,6 @@ public sealed class TeleopStartTests
             }
 
             graph.Connect("robot.teleop_enabled", "ik.follow", delayed: true);
-            node.SetDriven(graph.Wires.Select(w => w.To));
             Program = graph.Compile();
             Program.Start(Ticks.At(0));
         }

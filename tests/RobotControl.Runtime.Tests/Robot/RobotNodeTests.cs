@@ -41,7 +41,6 @@ public sealed class RobotNodeTests
         graph.Add(new Source("hand", "speed_mm_s", i => i == 5 ? 50_000 : 100)); // a jump at tick 5
         graph.Connect("src.elbow", "robot.right.elbow");
         graph.Connect("hand.speed_mm_s", "robot.right.input_speed_mm_s");
-        node.SetDriven(graph.Wires.Select(w => w.To));
 
         Ticks.Run(graph.Compile(), 10);
 
@@ -108,7 +107,6 @@ public sealed class RobotNodeTests
         graph.Add(node);
         graph.Add(ElbowSource(throwAt));
         graph.Connect("src.elbow", "robot.right.elbow");
-        node.SetDriven(graph.Wires.Select(w => w.To));
         return (port, node, graph.Compile());
     }
 }

@@ -181,10 +181,13 @@ internal sealed class GoalWriter
 
             foreach (var m in c.MotorArray)
             {
-                Volatile.Write(ref _sent[m.Index], m.PositionRad);
+                RestartCap(m);
             }
         }
     }
+
+    /// <summary>The motor's step cap starts again from its measured position, not from the goal sent last.</summary>
+    private void RestartCap(RobotMotor m) => Volatile.Write(ref _sent[m.Index], m.PositionRad);
 
     private void ComputeGoals(double dt)
     {
@@ -232,7 +235,7 @@ internal sealed class GoalWriter
             _seedSeen = _seed.Generation;
             foreach (var m in _layout.Motors)
             {
-                Volatile.Write(ref _sent[m.Index], m.PositionRad);
+                RestartCap(m);
             }
         }
 
