@@ -26,11 +26,12 @@ internal static class FaultWords
             SafetyCheck.PotMismatch => $"{who} position sensors disagree",
             SafetyCheck.NonFinite => who.Length == 0 || trip.Joint == "setpoint" ? "the control software sent an invalid position" : $"{who} reported an invalid value",
             SafetyCheck.HostStall => string.Create(c, $"the control computer paused for {trip.Measured:0} ms"),
-            SafetyCheck.DeadlineMiss => string.Create(c, $"the control loop fell {trip.Measured:0} ms behind"),
+            SafetyCheck.DeadlineMiss => string.Create(c, $"the control loop fell {trip.Measured:0} ms behind ({trip.Joint})"),
             SafetyCheck.MasterJump => $"{who} hand controller jumped",
             SafetyCheck.ModuleFault => "a motor module reported a fault (watchdog or hardware error)",
             SafetyCheck.Operator => "emergency stop pressed",
             SafetyCheck.MasterTimeout => $"{who} hand controller stopped sending",
+            SafetyCheck.PluginFault => $"{trip.Joint} of the control graph failed",
             _ => trip.Check.Name(),
         };
         var action = trip.Soft

@@ -187,6 +187,7 @@ public sealed class LiveSession : IConsoleSession
                 return _end;
             }
 
+            _session.StopMotorsNow("console closing: motors off"); // first, lock-free: the next write, ahead of queued commands
             _queue.Close();
             _stop.Cancel();
             _thread.Join();

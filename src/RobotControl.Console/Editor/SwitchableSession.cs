@@ -8,7 +8,9 @@ namespace RobotControl.WebConsole.Editor;
 /// </summary>
 public sealed class SwitchableSession : IConsoleSession
 {
+    private readonly Lock _gate = new();
     private volatile IConsoleSession _current;
+    private bool _closed;
 
     /// <summary>Starts with <paramref name="initial"/> (owned from now on).</summary>
     public SwitchableSession(IConsoleSession initial)
@@ -48,7 +50,16 @@ public sealed class SwitchableSession : IConsoleSession
     public IConsoleSession Replace(IConsoleSession next)
     {
         ArgumentNullException.ThrowIfNull(next);
-        return Interlocked.Exchange(ref _current, next);
+        lock (_gate)
+        {
+            if (_closed)
+            {
+                next.Dispose(); // the console is stopping: nothing new runs, its motors go off with it
+                throw new InvalidOperationException("the console is stopping: no graph starts now");
+            }
+
+            return Interlocked.Exchange(ref _current, next);
+        }
     }
 
     /// <inheritdoc />
@@ -94,7 +105,17 @@ public sealed class SwitchableSession : IConsoleSession
     public Task<CommandResult> ClearFaultsAsync() => _current.ClearFaultsAsync();
 
     /// <inheritdoc />
-    public SessionEnd Close() => _current.Close();
+    public SessionEnd Close()
+    {
+        IConsoleSession current;
+        lock (_gate)
+        {
+            _closed = true; // from here on no graph replaces the one closing
+            current = _current;
+        }
+
+        return current.Close();
+    }
 
     /// <inheritdoc />
     public void Dispose() => _current.Dispose();

@@ -45,6 +45,12 @@ public enum SafetyCheck
 
     /// <summary>A master sample implies a hand speed no hand can produce (a jump): a soft trip, hold and PEDAL_UP, as the master timeout.</summary>
     MasterJump,
+
+    /// <summary>
+    /// A plug-in upstream of the robot faulted (its tick or start threw): it is no longer ticked, the robot node holds
+    /// the arms, and the trip names the plug-in and what it threw.
+    /// </summary>
+    PluginFault,
 }
 
 /// <summary>What the robot does after a trip.</summary>
@@ -85,6 +91,7 @@ public static class SafetyNames
         SafetyCheck.WatchdogUnarmed => "watchdog_unarmed",
         SafetyCheck.HostStall => "host_stall",
         SafetyCheck.MasterJump => "master_jump",
+        SafetyCheck.PluginFault => "plugin_fault",
         _ => check.ToString(),
     };
 

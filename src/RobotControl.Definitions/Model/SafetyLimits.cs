@@ -80,6 +80,7 @@ public sealed record SafetyLimits
         [SafetyCheck.WatchdogUnarmed] = SafeState.TorqueOff,
         [SafetyCheck.HostStall] = SafeState.Hold,
         [SafetyCheck.MasterJump] = SafeState.Hold,
+        [SafetyCheck.PluginFault] = SafeState.Hold,
     };
 
     /// <summary>The safe state of <paramref name="check"/>.</summary>

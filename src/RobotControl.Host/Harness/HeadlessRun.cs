@@ -80,6 +80,7 @@ public static class HeadlessRun
         var reported = 0L;
         var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
         using var operatorStop = OperatorStop(options, session.Supervisor);
+        using var motorsFirst = MotorsOffAtStop(options, session);
         session.RunVirtual(
             ticks,
             () =>
@@ -113,6 +114,10 @@ public static class HeadlessRun
         var check = session.Stop();
         return Finish(stopper, check, loop, meter!, elapsed, session, events, faults, surgeon.Presses);
     }
+
+    /// <summary>A stop request (Ctrl+C, SIGTERM) switches the motors off at once, from the signal's own thread: the rest of the stop follows (<see cref="RobotSession.StopMotorsNow"/>).</summary>
+    private static CancellationTokenRegistration MotorsOffAtStop(RunOptions options, RobotSession session) =>
+        options.Stop.Register(() => session.StopMotorsNow("stop requested: motors off"));
 
     /// <summary>The command line's E-STOP (<see cref="RunOptions.EmergencyStop"/>) goes to the supervisor, as any operator E-STOP.</summary>
     private static CancellationTokenRegistration OperatorStop(RunOptions options, SafetySupervisor supervisor) =>
@@ -164,6 +169,7 @@ public static class HeadlessRun
         DrainEvents(events, TimeSpan.Zero, faults); // discovery problems, once, at time 0
         var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
         using var operatorStop = OperatorStop(options, session.Supervisor);
+        using var motorsFirst = MotorsOffAtStop(options, session);
         var nextProgress = options.ProgressInterval;
         StopCheck check;
         var threads = options.Threads ?? RealtimeThreads.Default;

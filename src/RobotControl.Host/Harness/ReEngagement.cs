@@ -59,10 +59,10 @@ internal sealed class ReEngagement
             _supervisor.PedalDown("harness");
             Presses++;
         }
-        catch (InvalidOperationException)
+        catch (Exception ex) when (ex is InvalidOperationException or IOException)
         {
             Refused++;
-            _upSince = now; // the level says why (e.g. the master's data is stale); try again after another delay
+            _upSince = now; // the level says why (e.g. the master's data is stale, the bus link failed); try again after another delay
         }
     }
 }

@@ -14,9 +14,9 @@ public sealed partial class SafetySupervisor
     {
         var now = _time.GetTimestamp();
         CheckGap(now);
-        if (Level == RunLevel.PedalDown)
+        if (Level is RunLevel.PedalUp or RunLevel.PedalDown)
         {
-            CheckLoop(now); // before the write that takes the loop's setpoints (on the virtual schedule, after the ticks due)
+            CheckLoop(now, Level); // before the write that takes the loop's setpoints (on the virtual schedule, after the ticks due)
         }
     }
 
@@ -60,6 +60,11 @@ public sealed partial class SafetySupervisor
         }
 
         CheckJumps(now);
+        if (_graph.NewUpstreamFault() is { } fault)
+        {
+            Trip(SafetyCheck.PluginFault, fault.PlugIn, 0, 0, string.Empty, now, TripSource, fault.What);
+        }
+
         _motorChecks.Check(driven: _robot.State == RobotState.Enabled, homed: Level is RunLevel.PedalUp or RunLevel.PedalDown, now);
     }
 
@@ -79,12 +84,20 @@ public sealed partial class SafetySupervisor
         }
     }
 
-    /// <summary>The loop behind while it drives the arms (PEDAL_DOWN): its last tick older than the stall limit (a tick that overran or hangs).</summary>
-    private void CheckLoop(long now)
+    /// <summary>
+    /// The loop behind, named by the plug-in it waits for. While it drives the arms (PEDAL_DOWN): its last tick older
+    /// than the stall limit (a tick that overran or hangs) is a soft trip, graded as a silence (from the modules'
+    /// torque-off stage on, the motors go off). While the arms hold (PEDAL_UP), only a loop dead for the torque-off
+    /// stage trips, taking the motors off: a dead loop no longer hears the operator's pedals, and the bus thread's
+    /// cycle would otherwise keep feeding the modules' watchdogs on its own.
+    /// </summary>
+    private void CheckLoop(long now, RunLevel level)
     {
-        if (_clock.LoopLag(now) is var lag && lag > _clock.StallTicks)
+        var lag = _clock.LoopLagAt(now, level);
+        var over = level == RunLevel.PedalDown ? _clock.StallTicks : _clock.TorqueOffStageTicks;
+        if (lag > over)
         {
-            Trip(SafetyCheck.DeadlineMiss, "loop", _clock.Ms(lag), _clock.Ms(_clock.StallTicks), "ms", now);
+            Trip(SafetyCheck.DeadlineMiss, _graph.Culprit(), _clock.Ms(lag), _clock.Ms(_clock.StallTicks), "ms", now);
         }
     }
 

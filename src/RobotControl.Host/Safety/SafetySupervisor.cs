@@ -42,6 +42,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private readonly TripGrading _grading;
     private readonly StallClock _clock;
     private readonly SupervisedHoming _homing;
+    private GraphWatch _graph = new();
     private long _jumpsSeen;
     private volatile bool _torqueOffTaken;
     private OperatorPedal _lastPedal;
@@ -69,7 +70,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         _moduleChecks = new ModuleChecks(robot, limits, trip);
         _homing = new SupervisedHoming(robot, _motorChecks, _levels);
         _inputs = new OperatorInputs(robot.ArmCount, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
-        _clock = new StallClock(_time, (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * _time.TimestampFrequency), _inputs);
+        _clock = new StallClock(_time, (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * _time.TimestampFrequency), _grading.TorqueOffStageMs, _inputs);
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.CycleCheck = this;
@@ -77,6 +78,17 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
 
     /// <summary>Thresholds and safe states.</summary>
     public SafetyLimits Limits { get; }
+
+    /// <summary>
+    /// Watches the graph that drives the robot (before the threads start): a late loop's trip names the plug-in it
+    /// waits for, and a plug-in faulting upstream of <paramref name="node"/> is a trip (<see cref="SafetyCheck.PluginFault"/>).
+    /// </summary>
+    public void WatchGraph(Runtime.Graph.GraphProgram program, Runtime.Robot.RobotNode node)
+    {
+        ArgumentNullException.ThrowIfNull(program);
+        ArgumentNullException.ThrowIfNull(node);
+        _graph = new GraphWatch(program, node, LoopPeriod.TotalMilliseconds);
+    }
 
     /// <summary>The control loop's period.</summary>
     public TimeSpan LoopPeriod { get; }

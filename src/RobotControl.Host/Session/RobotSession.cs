@@ -26,6 +26,7 @@ public sealed class RobotSession : IDisposable
 
     private bool _running;
     private StopCheck? _stopped;
+    private long _stopRequestedAt;
     private CpuLatencyHold? _cpuLatency;
 
     private RobotSession(LoadedGraph graph, RobotConnection connection, ManualTimeProvider? loopClock, DiscoveryReport discovery, ControlLoop loop, SafetySupervisor supervisor)
@@ -111,6 +112,7 @@ public sealed class RobotSession : IDisposable
             }
 
             loaded.RobotNode!.Attach(bus, supervisor); // the graph reports the operator's pedals and input ages to the supervisor
+            supervisor.WatchGraph(loaded.Program, loaded.RobotNode!); // a late loop names its plug-in; a plug-in fault upstream trips
             var observer = options.Observer?.Invoke(loaded.RobotNode!, bus);
             var loop = new ControlLoop(loaded.Program, loopClock ?? TimeProvider.System, loaded.Document.LoopRateHz, observer);
             return new RobotSession(loaded, connection, loopClock, discovery, loop, supervisor);
@@ -236,28 +238,70 @@ public sealed class RobotSession : IDisposable
     public string? CpuLatency => _cpuLatency?.Outcome;
 
     /// <summary>
-    /// Stops the loop and the bus thread (if running), switches the motors off on every module and reads them back;
-    /// the first call does it, later calls return its result.
+    /// The first thing any stop does (a signal, the console closing, <see cref="Stop"/>), from any thread, lock-free and
+    /// never waiting: the next write of the bus cycle switches the motors off, ahead of any queued work, whose running
+    /// piece is cut short at its next transaction. <see cref="Stop"/> then reads them back. The first call's time is
+    /// kept (<see cref="StopRequestedAt"/>).
+    /// </summary>
+    public void StopMotorsNow(string reason)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(reason);
+        _ = Interlocked.CompareExchange(ref _stopRequestedAt, Clock.GetTimestamp(), 0);
+        Robot.EmergencyHold(reason, torqueOff: true);
+    }
+
+    /// <summary>When the first stop was asked for, on <see cref="Clock"/> (0: not yet).</summary>
+    public long StopRequestedAt => Interlocked.Read(ref _stopRequestedAt);
+
+    /// <summary>How long a stop waits for the loop's tick to end, once the motors are off and read back.</summary>
+    public static readonly TimeSpan LoopStopWait = TimeSpan.FromSeconds(1);
+
+    /// <summary>
+    /// Stops the session, the motors first: they are asked off (<see cref="StopMotorsNow"/>), the bus thread ends
+    /// after its cycle, the motors are switched off on every module and read back (<see cref="StopCheck"/>); only then
+    /// is the loop stopped, waiting at most <see cref="LoopStopWait"/> for a tick that does not end (a hung plug-in
+    /// cannot hold a stop: <see cref="StopCheck.LoopHung"/> names it). The first call does it, later calls return its result.
     /// </summary>
     public StopCheck Stop()
     {
+        if (_stopped is not null)
+        {
+            return _stopped;
+        }
+
         if (_running)
         {
             _running = false;
-            Loop.Stop();
+            StopMotorsNow("session stop: motors off");
             Robot.Stop();
+        }
+        else
+        {
+            _ = Interlocked.CompareExchange(ref _stopRequestedAt, Clock.GetTimestamp(), 0);
+        }
+
+        var check = StopCheck.TorqueOffAndVerify(Robot) with { AfterRequest = Clock.GetElapsedTime(StopRequestedAt) };
+        string? hung = null;
+        if (!Loop.Stop(LoopStopWait))
+        {
+            hung = Graph.Program.Profile.InTick() is { } t
+                ? string.Create(System.Globalization.CultureInfo.InvariantCulture, $"the control loop did not end: {t.Name} for {t.Ms / 1e3:0.0} s; its plug-ins were not stopped")
+                : "the control loop did not end; its plug-ins were not stopped";
         }
 
         _cpuLatency?.Dispose();
-
-        return _stopped ??= StopCheck.TorqueOffAndVerify(Robot);
+        return _stopped = check with { LoopHung = hung };
     }
 
     /// <inheritdoc />
     public void Dispose()
     {
         _ = Stop();
-        Loop.Dispose();
+        if (_stopped?.LoopHung is null)
+        {
+            Loop.Dispose();
+        }
+
         Connection.Dispose();
     }
 

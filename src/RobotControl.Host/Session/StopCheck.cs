@@ -18,17 +18,26 @@ namespace RobotControl.Host.Session;
 /// <param name="Unreachable">Modules that did not answer the read-back.</param>
 public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IReadOnlyList<string> LatchedErrors, IReadOnlyList<string> Unreachable)
 {
+    /// <summary>How long after the first stop request (a signal, the console closing, the session's stop) the motors were read back (null: not timed).</summary>
+    public TimeSpan? AfterRequest { get; init; }
+
+    /// <summary>Null when the control loop ended at the stop; else what its thread was stuck in (a plug-in's tick that did not return).</summary>
+    public string? LoopHung { get; init; }
+
+    /// <summary>Why the link itself failed during the stop (an adapter unplugged, the other end of a pty gone), or null.</summary>
+    public string? LinkFailure { get; init; }
+
     /// <summary>True when every module answered and reports torque off on every channel.</summary>
     public bool TorqueOff => TorqueOn.Count == 0 && Unreachable.Count == 0;
 
     /// <summary>The read-back in words: <c>torque off on all 6 modules (read back)</c>, or where torque is not confirmed off.</summary>
     public string Summary => TorqueOff
         ? $"torque off on all {Modules} modules (read back)"
-        : $"torque NOT confirmed off: on at [{string.Join(", ", TorqueOn)}], no answer from [{string.Join(", ", Unreachable)}]";
+        : $"torque NOT confirmed off: on at [{string.Join(", ", TorqueOn)}], no answer from [{string.Join(", ", Unreachable)}]{(LinkFailure is null ? string.Empty : $"; the link failed: {LinkFailure} (the modules' bus watchdogs switch their motors off)")}";
 
     /// <summary>
     /// Writes the read-back as the reports' <c>"stop"</c> object: <c>modules</c>, <c>torque_off</c>, <c>torque_on</c>,
-    /// <c>latched_errors</c>, <c>unreachable</c> (a run's <c>report.json</c> and the console's session report).
+    /// <c>latched_errors</c>, <c>unreachable</c>, <c>read_back_after_ms</c> (from the first stop request), <c>loop_hung</c> (a run's <c>report.json</c> and the console's session report).
     /// </summary>
     public void Write(Utf8JsonWriter w)
     {
@@ -39,6 +48,13 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
         WriteList(w, "torque_on", TorqueOn);
         WriteList(w, "latched_errors", LatchedErrors);
         WriteList(w, "unreachable", Unreachable);
+        if (AfterRequest is { } after)
+        {
+            w.WriteNumber("read_back_after_ms", Math.Round(after.TotalMilliseconds, 1));
+        }
+
+        w.WriteString("loop_hung", LoopHung);
+        w.WriteString("link_failure", LinkFailure);
         w.WriteEndObject();
     }
 
@@ -55,12 +71,14 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
         var torque = table["torque_enable"];
         var watchdog = table["bus_watchdog"];
         var status = table["hardware_error_status"];
+        string? linkFailure = null;
         try
         {
             robot.EnableTorque(false);
         }
         catch (Exception ex) when (ex is IOException or InvalidOperationException)
         {
+            linkFailure = ex is IOException ? ex.Message : null;
             var zeros = new byte[Span(torque)];
             foreach (var c in robot.Controllers)
             {
@@ -69,9 +87,9 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
                     _ = robot.Client.Write(c.Id, torque.At(0), zeros, BusRobot.InsistingRetries);
                     _ = robot.Client.Write(c.Id, watchdog.At(0), zeros.AsSpan(0, watchdog.Size), BusRobot.InsistingRetries);
                 }
-                catch (IOException)
+                catch (IOException failure)
                 {
-                    // The link itself failed (an adapter unplugged): the read-back below says which modules are unreachable.
+                    linkFailure ??= failure.Message; // the link itself failed (an adapter unplugged): the read-back below says which modules are unreachable
                 }
             }
         }
@@ -84,7 +102,7 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
         foreach (var c in robot.Controllers)
         {
             var who = $"{c.Id} \"{c.Name}\"";
-            if (!ReadBack(robot, c.Id, torque.At(0), channels).Succeeded || ReadBack(robot, c.Id, status.At(0), error).Outcome != ReplyOutcome.Ok)
+            if (!ReadBack(robot, c.Id, torque.At(0), channels, ref linkFailure).Succeeded || ReadBack(robot, c.Id, status.At(0), error, ref linkFailure).Outcome != ReplyOutcome.Ok)
             {
                 unreachable.Add(who);
                 continue;
@@ -106,7 +124,7 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
             }
         }
 
-        return new StopCheck(robot.Controllers.Count, on, latched, unreachable);
+        return new StopCheck(robot.Controllers.Count, on, latched, unreachable) { LinkFailure = linkFailure };
     }
 
     private static void WriteList(Utf8JsonWriter w, string name, IReadOnlyList<string> items)
@@ -121,14 +139,15 @@ public sealed record StopCheck(int Modules, IReadOnlyList<string> TorqueOn, IRea
     }
 
     /// <summary>One insisting read of the stop's read-back; a link that fails (an adapter unplugged) is no answer.</summary>
-    private static Reply ReadBack(BusRobot robot, byte id, ushort address, Span<byte> data)
+    private static Reply ReadBack(BusRobot robot, byte id, ushort address, Span<byte> data, ref string? linkFailure)
     {
         try
         {
             return robot.Client.Read(id, address, data, BusRobot.InsistingRetries);
         }
-        catch (IOException)
+        catch (IOException ex)
         {
+            linkFailure ??= ex.Message;
             return new Reply(ReplyOutcome.Timeout, 0);
         }
     }

@@ -22,6 +22,14 @@ namespace RobotControl.Host.Session;
 /// This is the deterministic equivalent of a loop thread and a bus thread exchanging latest values: each tick sees
 /// and writes exactly what it would at its instant with two threads, whatever a bus cycle costs relative to the loop
 /// period. The same robot, graph, faults and seed give the same run.
+/// <para>
+/// A tick's cost counts against its period, as on the wall clock: a tick (after the first, which starts the graph)
+/// whose CPU time on this thread (<see cref="ThreadCpuClock"/>, without time spent compiling) exceeds the period keeps
+/// the loop busy for that long on the virtual clock. It is a deadline miss, the ticks due meanwhile are skipped (misses
+/// too), and the bus cycles on meanwhile, so that the safety supervisor sees the loop fall behind and trips as it would
+/// with real threads. A graph too slow for its rate fails on the virtual robot before it reaches a real one; a machine
+/// busy with other work does not (the thread's CPU time leaves out the time it waited for a CPU).
+/// </para>
 /// </summary>
 public sealed class VirtualSchedule
 {
@@ -33,6 +41,7 @@ public sealed class VirtualSchedule
     private readonly long _period;
     private readonly Action<ControlLoop, long> _tick;
     private long _nextTick;
+    private long _busyUntil;
 
     /// <summary>A schedule of <paramref name="ticks"/> loop ticks from now on <paramref name="busClock"/>.</summary>
     /// <param name="robot">The robot whose cycle steps are called (a <see cref="BusRobot"/>).</param>
@@ -98,7 +107,10 @@ public sealed class VirtualSchedule
         }
     }
 
-    /// <summary>Runs every tick due by the bus clock's now, each at its own instant on the loop clock.</summary>
+    /// <summary>
+    /// Runs every tick due by the bus clock's now, each at its own instant on the loop clock; those due while the loop
+    /// is still busy with a tick that cost more than its period are skipped, as the loop's thread skips them.
+    /// </summary>
     private void TickDue()
     {
         var now = _busClock.GetTimestamp();
@@ -106,11 +118,39 @@ public sealed class VirtualSchedule
         {
             if (_loop.TickCount < _ticks)
             {
-                _loopClock.SetTimestamp(_nextTick);
-                _tick(_loop, _nextTick);
+                if (_nextTick < _busyUntil)
+                {
+                    _loop.Statistics.AddDeadlineMisses(1);
+                }
+                else
+                {
+                    Tick(_nextTick);
+                }
             }
 
             _nextTick += _period;
+        }
+    }
+
+    /// <summary>One tick at <paramref name="due"/>, its CPU time (without compiling) counted against the period.</summary>
+    private void Tick(long due)
+    {
+        _loopClock.SetTimestamp(due);
+        var measured = _loop.TickCount > 0 && ThreadCpuClock.Available; // the first tick starts the graph
+        var cpu = measured ? ThreadCpuClock.NowNs() : 0;
+        var jit = measured ? System.Runtime.JitInfo.GetCompilationTime(currentThread: true) : TimeSpan.Zero;
+        _tick(_loop, due);
+        if (!measured)
+        {
+            return;
+        }
+
+        var costNs = ThreadCpuClock.NowNs() - cpu - (long)((System.Runtime.JitInfo.GetCompilationTime(currentThread: true) - jit).TotalMicroseconds * 1e3);
+        var cost = (long)(costNs * 1e-9 * _busClock.TimestampFrequency);
+        if (cost > _period)
+        {
+            _busyUntil = due + cost;
+            _loop.Statistics.AddDeadlineMisses(1);
         }
     }
 }

@@ -371,6 +371,7 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
         }
 
         _feedback.CycleLost(_faults);
+        Slot.LinkFailedThisCycle(ex.Message); // queued commands fail now and new ones are refused: nobody waits on a dead link
         Check();
     }
 

@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using RobotControl.Plugins.Sdk;
 using RobotControl.Plugins.Sdk.Observation;
 using RobotControl.Plugins.Sdk.Ports;
@@ -114,6 +115,7 @@ public sealed class GraphProgram
         _nonFinite = new long[n];
         Wires = wires;
         Order = _order;
+        Profile = new TickProfile(_order);
         OutputSignals = new SignalView(outputNames, _outputs);
         InputSignals = new SignalView(inputNames, _inputs);
         foreach (var observer in _order.OfType<ISignalObserver>())
@@ -124,6 +126,9 @@ public sealed class GraphProgram
 
     /// <summary>Instances in execution order.</summary>
     public IReadOnlyList<Plugin> Order { get; }
+
+    /// <summary>Where the ticks' time goes: the instance in its tick now, the slowest of the last tick (any thread).</summary>
+    public TickProfile Profile { get; }
 
     /// <summary>The wires.</summary>
     public IReadOnlyList<Wire> Wires { get; }
@@ -187,6 +192,9 @@ public sealed class GraphProgram
         var order = _order;
         var inputs = _inputs;
         var outputs = _outputs;
+        var profile = Profile;
+        var slowest = -1;
+        var slowestCost = -1L;
         for (var i = 0; i < order.Length; i++)
         {
             var tainted = _faulted[i];
@@ -212,6 +220,8 @@ public sealed class GraphProgram
 
             var plugin = order[i];
             plugin.UpstreamFaulted = tainted;
+            var begin = Stopwatch.GetTimestamp();
+            profile.Enter(i, begin);
             try
             {
                 plugin.Tick(context);
@@ -220,14 +230,26 @@ public sealed class GraphProgram
             catch (Exception ex)
 #pragma warning restore CA1031
             {
+                profile.Leave();
                 Fault(i, context, "tick failed", ex);
                 continue;
+            }
+
+            var cost = Stopwatch.GetTimestamp() - begin;
+            profile.Leave();
+            if (cost > slowestCost)
+            {
+                (slowest, slowestCost) = (i, cost);
             }
 
             Sanitise(i);
         }
 
         CopyDelayed();
+        if (slowest >= 0)
+        {
+            profile.Complete(slowest, slowestCost);
+        }
     }
 
     /// <summary>Delayed wires: each target takes its source's value, read by the next tick.</summary>

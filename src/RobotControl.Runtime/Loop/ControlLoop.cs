@@ -71,7 +71,7 @@ public sealed class ControlLoop : IDisposable
 
     /// <summary>
     /// Methods the JIT compiled on the loop thread after its first tick (0 when every path ran before, or had been
-    /// compiled ahead); known once the thread has ended (<see cref="Stop"/>).
+    /// compiled ahead); known once the thread has ended (<see cref="Stop()"/>).
     /// </summary>
     public long MethodsCompiledAfterFirstTick { get; private set; }
 
@@ -114,11 +114,24 @@ public sealed class ControlLoop : IDisposable
     }
 
     /// <summary>Stops the loop thread (if any) and the graph.</summary>
-    public void Stop()
+    public void Stop() => _ = Stop(Timeout.InfiniteTimeSpan);
+
+    /// <summary>
+    /// Stops the loop thread (if any), waiting at most <paramref name="timeout"/> for its tick to end, then the graph.
+    /// False when the thread is still in a tick (a plug-in's <c>Tick</c> that does not return: <see
+    /// cref="GraphProgram.Profile"/> names it): the graph's plug-ins are then not stopped, since their tick still runs;
+    /// the thread is a background thread and ends with the process.
+    /// </summary>
+    public bool Stop(TimeSpan timeout)
     {
         _stopRequested = true;
-        _thread?.Join();
+        if (_thread is { } thread && thread != Thread.CurrentThread && !thread.Join(timeout))
+        {
+            return false;
+        }
+
         Program.Stop();
+        return true;
     }
 
     /// <inheritdoc />

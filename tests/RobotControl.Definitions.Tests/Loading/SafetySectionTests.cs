@@ -61,7 +61,7 @@ public sealed class SafetySectionTests : IDisposable
     [InlineData("""{ "deadline_misses_in_a_row": 0 }""", "$.safety.deadline_misses_in_a_row", "is 0; must be at least 1")]
     [InlineData("""{ "master_timeout_ms": 0 }""", "$.safety.master_timeout_ms", "is 0; must be at least 1")]
     [InlineData("""{ "safe_state": "hold" }""", "$.safety.safe_state", "must be an object, found the string \"hold\"")]
-    [InlineData("""{ "safe_state": { "tracking": "hold" } }""", "$.safety.safe_state.tracking", "unknown check (known: non_finite, module_silent, tracking_error, over_current, pot_mismatch, deadline_miss, module_fault, operator, master_timeout, watchdog_unarmed, host_stall, master_jump)")]
+    [InlineData("""{ "safe_state": { "tracking": "hold" } }""", "$.safety.safe_state.tracking", "unknown check (known: non_finite, module_silent, tracking_error, over_current, pot_mismatch, deadline_miss, module_fault, operator, master_timeout, watchdog_unarmed, host_stall, master_jump, plugin_fault)")]
     [InlineData("""{ "safe_state": { "over_current": 1 } }""", "$.safety.safe_state.over_current", "must be \"hold\" or \"torque_off\", found the number 1")]
     [InlineData("""{ "motors": [] }""", "$.safety.motors", "must be an object, found an array")]
     [InlineData("""{ "motors": { "right.elbow": 0.2 } }""", "$.safety.motors.right.elbow", "must be an object, found the number 0.2")]

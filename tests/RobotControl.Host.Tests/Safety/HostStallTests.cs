@@ -1,6 +1,7 @@
 using RobotControl.Definitions.Model;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
+using RobotControl.Robot.States;
 
 namespace RobotControl.Host.Tests.Safety;
 
@@ -112,21 +113,15 @@ public sealed class HostStallTests
         Assert.All(run.Motors, m => Assert.False(m.DriverEnabled, $"{m.Name} driven after a failed homing"));
     }
 
-    [Fact]
-    public void A_loop_that_stops_ticking_while_it_drives_is_a_soft_deadline_miss_the_arms_hold_and_the_pedal_is_refused_until_it_ticks()
+    /// <summary>Cycles the bus of <paramref name="session"/> with no tick (a loop that stopped ticking) for <paramref name="ms"/> or until E_STOP.</summary>
+    private static void CycleWithoutTicks(RobotSession session, double ms)
     {
-        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
-        var supervisor = session.Supervisor;
-        supervisor.PedalDown("pedal");
-        session.RunVirtual(100);
-
-        // The loop stops ticking (a tick that never returns) while the bus cycles on.
         var bus = session.Robot;
         var clock = session.Connection.VirtualClock!;
         var start = clock.GetTimestamp();
         using (bus.OwnBus())
         {
-            while (clock.GetElapsedTime(start) < TimeSpan.FromMilliseconds(600) && supervisor.Level != RunLevel.EStop)
+            while (clock.GetElapsedTime(start) < TimeSpan.FromMilliseconds(ms) && session.Supervisor.Level != RunLevel.EStop)
             {
                 bus.Write();
                 bus.Read();
@@ -136,20 +131,46 @@ public sealed class HostStallTests
 
             bus.Write();
         }
+    }
 
-        var soft = supervisor.Trips[0];
-        Assert.Equal((SafetyCheck.DeadlineMiss, "loop", true, SafeState.Hold), (soft.Check, soft.Joint, soft.Soft, soft.Action));
+    [Fact]
+    public void A_loop_that_stops_ticking_while_it_drives_is_a_soft_deadline_miss_the_arms_hold_and_the_pedal_is_refused_until_it_ticks()
+    {
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
+        var supervisor = session.Supervisor;
+        supervisor.PedalDown("pedal");
+        session.RunVirtual(100);
+
+        CycleWithoutTicks(session, 100); // shorter than the modules' torque-off stage (500 ms)
+
+        var soft = Assert.Single(supervisor.Trips);
+        Assert.Equal((SafetyCheck.DeadlineMiss, "loop", true, SafeState.Hold), (soft.Check, soft.Joint, soft.Soft, soft.Action)); // between ticks: no plug-in to name
         Assert.InRange(soft.Measured, 10, 14);
         Assert.Equal((RunLevel.PedalDown, RunLevel.PedalUp), (supervisor.History[^1].From, supervisor.History[^1].To));
-        // At PEDAL_UP the arms hold whatever the loop does: the loop is timed only while it drives, and it may not
-        // drive again before it ticks.
-        Assert.Single(supervisor.Trips);
         Assert.Equal(RunLevel.PedalUp, supervisor.Level);
         var refused = Assert.Throws<InvalidOperationException>(() => supervisor.PedalDown("pedal"));
         Assert.Matches(@"^pedal down \(pedal\) refused: the control loop has not ticked for \d+ ms$", refused.Message);
         session.RunVirtual(200);
         supervisor.PedalDown("pedal");
         Assert.Equal(RunLevel.PedalDown, supervisor.Level);
+    }
+
+    [Fact]
+    public void A_loop_dead_for_the_modules_torque_off_stage_takes_the_motors_off_also_at_pedal_up()
+    {
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = Graphs.Path("teleop-lb.json") }, TestPlugins.Catalog());
+        var supervisor = session.Supervisor;
+        session.RunVirtual(100);
+        Assert.Equal(RunLevel.PedalUp, supervisor.Level); // never pressed: the arms hold, the loop is watched all the same
+
+        CycleWithoutTicks(session, 700);
+
+        Assert.Equal(RunLevel.EStop, supervisor.Level);
+        var trip = supervisor.Trips[^1];
+        Assert.Equal((SafetyCheck.DeadlineMiss, false, SafeState.TorqueOff), (trip.Check, trip.Soft, trip.Action));
+        Assert.InRange(trip.Measured, 500, 505); // the modules' torque-off stage: the bus no longer stands in for a dead loop
+        Assert.True(supervisor.MotorsTrippedOff);
+        Assert.NotEqual(RobotState.Enabled, session.Robot.State);
     }
 
     [Fact]

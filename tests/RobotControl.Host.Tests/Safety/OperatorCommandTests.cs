@@ -220,7 +220,7 @@ public sealed class OperatorCommandTests
         var error = Assert.Throws<InvalidOperationException>(() => supervisor.PedalDown("console"));
 
         Assert.Equal(FormattableString.Invariant($"pedal down (console) refused: the control loop has not ticked for {lagMs:0} ms"), error.Message);
-        Assert.Empty(supervisor.Trips); // at PEDAL_UP the loop is not timed
+        Assert.Empty(supervisor.Trips); // at PEDAL_UP only a loop dead for the modules' torque-off stage trips
 
         // Exactly the stall limit (10 loop periods) since the last tick: allowed.
         supervisor.ReportTick();

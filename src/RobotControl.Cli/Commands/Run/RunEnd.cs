@@ -57,7 +57,13 @@ internal static class RunEnd
     public static void TellStop(StopCheck stop, TextWriter output, TextWriter error)
     {
         ArgumentNullException.ThrowIfNull(stop);
-        (stop.TorqueOff ? output : error).WriteLine($"  stop: {stop.Summary}");
+        var after = stop.AfterRequest is { } t ? string.Create(System.Globalization.CultureInfo.InvariantCulture, $", {t.TotalMilliseconds:0} ms after the stop request") : string.Empty;
+        (stop.TorqueOff ? output : error).WriteLine($"  stop: {stop.Summary}{after}");
+        if (stop.LoopHung is { } hung)
+        {
+            error.WriteLine($"  {hung}");
+        }
+
         foreach (var latched in stop.LatchedErrors)
         {
             error.WriteLine($"  latched in module {latched}");

@@ -136,15 +136,27 @@ internal sealed class ConsoleCommand : ICliCommand
             }
 
             output.WriteLine("console: Ctrl+C stops");
-            using (var signals = new StopSignals(error, "pages closed, loop off, motors off, modules read back"))
+            using (var signals = new StopSignals(error, "motors off and read back first, then pages closed, loop off"))
             {
                 signals.Token.WaitHandle.WaitOne();
-                server.DisposeAsync().AsTask().GetAwaiter().GetResult(); // no more commands from the pages
-                end = switchable.Close();
+                end = switchable.Close(); // the motors first (read back), whatever the pages and their requests are doing
+                CloseServer(server, error);
             }
         }
 
         return Ended(end, extras.Report, output, error);
+    }
+
+    /// <summary>How long the pages' server may take to close its connections once the motors are off.</summary>
+    private static readonly TimeSpan ServerCloseWait = TimeSpan.FromSeconds(2);
+
+    /// <summary>Closes the pages' server, waiting at most <see cref="ServerCloseWait"/> (a request that hangs does not hold the report).</summary>
+    private static void CloseServer(ConsoleServer server, TextWriter error)
+    {
+        if (!server.DisposeAsync().AsTask().Wait(ServerCloseWait))
+        {
+            error.WriteLine($"console: the pages' server did not close within {ServerCloseWait.TotalSeconds:0} s; the report is written without waiting for it");
+        }
     }
 
     /// <summary>Says how the session ended and writes its report; 0 when every module answered with torque off.</summary>

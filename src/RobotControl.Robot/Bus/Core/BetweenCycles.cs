@@ -18,6 +18,7 @@ public sealed class BetweenCycles
     private readonly ConcurrentQueue<IWork> _queue = new();
     private readonly Lock _gate = new();
     private readonly BusClient _client;
+    private volatile string? _linkFailure;
     private readonly BusInterruption _stop;
     private volatile Thread? _owner;
     private long _ran;
@@ -75,6 +76,12 @@ public sealed class BetweenCycles
         {
             if (_owner is not null)
             {
+                if (_linkFailure is { } why)
+                {
+                    item.Fail(LinkFailed(why)); // refused at once: it would wait for a cycle that cannot run
+                    return item.Done.Task;
+                }
+
                 _queue.Enqueue(item);
                 return item.Done.Task;
             }
@@ -100,6 +107,25 @@ public sealed class BetweenCycles
             return new Ownership(this, nested);
         }
     }
+
+    /// <summary>
+    /// The owner: the link failed this cycle (an adapter unplugged, the other end of a pty gone). Every queued piece
+    /// fails with <paramref name="why"/> and new ones are refused at once until a cycle succeeds again
+    /// (<see cref="LinkWorks"/>): a caller is told, never left waiting for a cycle that cannot run.
+    /// </summary>
+    internal void LinkFailedThisCycle(string why)
+    {
+        _linkFailure = why;
+        while (_queue.TryDequeue(out var item))
+        {
+            item.Fail(LinkFailed(why));
+        }
+    }
+
+    /// <summary>The owner: a cycle succeeded; pieces are queued again.</summary>
+    internal void LinkWorks() => _linkFailure = null;
+
+    private static IOException LinkFailed(string why) => new($"the bus link failed ({why}): nothing was sent");
 
     /// <summary>Runs the next piece of work, if any and no stop is on its way (the owner, between cycles).</summary>
     internal void RunNext()

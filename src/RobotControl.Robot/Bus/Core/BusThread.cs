@@ -86,7 +86,11 @@ internal sealed class BusThread(BusRobot robot, BusRobotOptions options, TimePro
             try
             {
                 robot.RunCycle();
-                _lastFailure = null; // the link works again: its next failure is news
+                if (_lastFailure is not null)
+                {
+                    robot.Slot.LinkWorks();
+                    _lastFailure = null; // the link works again: its next failure is news
+                }
             }
             catch (IOException ex)
             {

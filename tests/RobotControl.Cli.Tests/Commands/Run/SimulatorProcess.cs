@@ -55,6 +55,9 @@ internal sealed partial class SimulatorProcess : IDisposable
         }
     }
 
+    /// <summary>Kills the simulator outright (SIGKILL), as an unplugged adapter ends the link: the pty's other end hangs up.</summary>
+    public void Kill() => _process.Signal("KILL");
+
     public void Dispose() => _process.Dispose();
 
     [GeneratedRegex(@"serial:\S+")]

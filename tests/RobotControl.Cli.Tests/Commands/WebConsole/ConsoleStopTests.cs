@@ -70,6 +70,32 @@ public sealed class ConsoleStopTests
     }
 
     [Fact]
+    public async Task With_a_page_streaming_Ctrl_C_switches_the_motors_off_and_reads_them_back_before_the_server_closes()
+    {
+        var report = Path.Combine(Directory.CreateTempSubdirectory("rcconsole").FullName, "session.json");
+        using (var console = new RunProcess("console", RunProcess.Graph, "--virtual", "--bind", "127.0.0.1:0", "--report", report))
+        {
+            console.WaitFor("Ctrl+C stops", RunProcess.Patience);
+            var page = new Uri(System.Text.RegularExpressions.Regex.Match(console.Output, @"console: (http://\S+)").Groups[1].Value);
+            using var socket = new System.Net.WebSockets.ClientWebSocket();
+            var stream = new UriBuilder(page) { Scheme = "ws", Path = "/api/stream" }.Uri;
+            await socket.ConnectAsync(stream, CancellationToken.None); // a page streaming, never read: the server's frames queue up
+            await Task.Delay(500);
+            console.Signal("INT");
+            Assert.Equal(0, console.WaitForExit(RunProcess.Patience));
+            var output = console.Output;
+            Assert.Contains("stop: torque off on all 6 modules (read back)", output, StringComparison.Ordinal);
+        }
+
+        using var doc = JsonDocument.Parse(File.ReadAllText(report));
+        var stop = doc.RootElement.GetProperty("stop");
+        Assert.True(stop.GetProperty("torque_off").GetBoolean(), stop.ToString());
+
+        // Read back before the server is closed: not after its connections' graceful shutdown (30 s with a page open).
+        Assert.True(stop.GetProperty("read_back_after_ms").GetDouble() < 5_000, stop.ToString());
+    }
+
+    [Fact]
     public void A_cpu_this_machine_does_not_have_is_refused_before_the_session_starts() =>
         Cli.AssertRefused(Cli.Run("console", RunProcess.Graph, "--virtual", "--cpu", "1023"), $"--cpu 1023: this machine has CPUs 0..{Environment.ProcessorCount - 1}");
 
