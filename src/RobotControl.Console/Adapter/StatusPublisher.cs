@@ -98,6 +98,10 @@ internal sealed class StatusPublisher : IDisposable
         }
     }
 
+    /// <summary>The session's state while the robot node holds for a plug-in fault: which plug-in, and what it threw.</summary>
+    private static string HeldBy(IReadOnlyList<Runtime.Graph.PluginFault> faults) =>
+        faults.Count == 0 ? "holding (a plug-in faulted)" : $"holding: plug-in '{faults[0].Instance}' faulted ({faults[0].Message})";
+
     /// <summary>The run status as it is now.</summary>
     public SessionStatus BuildStatus()
     {
@@ -105,7 +109,7 @@ internal sealed class StatusPublisher : IDisposable
         var stats = _session.Loop.Statistics;
         var faults = _bus.Faults;
         var phase = _sessionThread.Phase;
-        var state = phase == "running" && _session.Node.Holding ? "holding (a plug-in faulted)" : phase;
+        var state = phase == "running" && _session.Node.Holding ? HeldBy(_session.Graph.Program.Faults) : phase;
         var faultNames = Enum.GetValues<RobotFaults>().Where(f => f != RobotFaults.None && faults.HasFlag(f)).Select(f => f.ToString())
             .Concat(_supervisor.Level == RunLevel.EStop ? _supervisor.Trips.Select(t => $"trip: {t}") : []);
         return new SessionStatus(

@@ -25,8 +25,9 @@ namespace RobotControl.Host.Session;
 /// <para>
 /// A tick's cost counts against its period, as on the wall clock: a tick (after the first, which starts the graph)
 /// whose CPU time on this thread (<see cref="ThreadCpuClock"/>, without time spent compiling) exceeds the period keeps
-/// the loop busy for that long on the virtual clock. It is a deadline miss, the ticks due meanwhile are skipped (misses
-/// too), and the bus cycles on meanwhile, so that the safety supervisor sees the loop fall behind and trips as it would
+/// the loop busy for that long on the virtual clock: the loop counts its misses as on its own thread
+/// (<see cref="ControlLoop.Overran"/>: k for a tick of k periods and a little more), the ticks due meanwhile are
+/// skipped, and the bus cycles on meanwhile, so that the safety supervisor sees the loop fall behind and trips as it would
 /// with real threads. A graph too slow for its rate fails on the virtual robot before it reaches a real one; a machine
 /// busy with other work does not (the thread's CPU time leaves out the time it waited for a CPU).
 /// </para>
@@ -118,13 +119,9 @@ public sealed class VirtualSchedule
         {
             if (_loop.TickCount < _ticks)
             {
-                if (_nextTick < _busyUntil)
+                if (_nextTick >= _busyUntil)
                 {
-                    _loop.Statistics.AddDeadlineMisses(1);
-                }
-                else
-                {
-                    Tick(_nextTick);
+                    Tick(_nextTick); // one due while the loop was still busy is skipped
                 }
             }
 
@@ -150,7 +147,7 @@ public sealed class VirtualSchedule
         if (cost > _period)
         {
             _busyUntil = due + cost;
-            _loop.Statistics.AddDeadlineMisses(1);
+            _loop.Overran(_busyUntil);
         }
     }
 }

@@ -90,6 +90,34 @@ public sealed class ControlLoop : IDisposable
         RunTick(_time.GetTimestamp());
     }
 
+    /// <summary>
+    /// A stepped caller's measure of the tick it just ran (virtual-time use): it finished at
+    /// <paramref name="finishedTimestamp"/> on the loop clock, later than the clock showed (its measured cost). Its
+    /// deadline and the slots it overran count as on the loop's own thread, and <see cref="NextDueTimestamp"/> moves
+    /// past the skipped slots.
+    /// </summary>
+    public void Overran(long finishedTimestamp)
+    {
+        if (_thread is not null)
+        {
+            throw new InvalidOperationException("the loop runs on its own thread: it times its ticks itself");
+        }
+
+        var deadline = _nextDue; // the last tick moved it one period past that tick's due time: its deadline
+        long misses = finishedTimestamp > deadline ? 1 : 0;
+        if (finishedTimestamp > deadline + _periodTimestamp)
+        {
+            var behind = (finishedTimestamp - deadline) / _periodTimestamp;
+            _nextDue = deadline + (behind * _periodTimestamp);
+            misses += behind;
+        }
+
+        if (misses > 0)
+        {
+            Statistics.AddDeadlineMisses(misses);
+        }
+    }
+
     /// <summary>Starts the loop thread.</summary>
     public void Start() => Start(static () => { });
 

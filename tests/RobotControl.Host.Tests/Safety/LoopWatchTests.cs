@@ -46,6 +46,50 @@ public sealed class CpuBurnerPlugin : Plugin<MisbehaviourSettings>
     }
 }
 
+/// <summary>Settings of <see cref="RandomCostPlugin"/>.</summary>
+public sealed record RandomCostSettings : PluginSettings
+{
+    /// <summary>Seed of the costs.</summary>
+    [Setting("seed of the costs", Minimum = 0, Maximum = 1e6)]
+    public double Seed { get; init; }
+
+    /// <summary>Longest cost drawn, ms.</summary>
+    [Setting("longest cost drawn, ms", Minimum = 2, Maximum = 100)]
+    public double MaxMs { get; init; } = 5;
+}
+
+/// <summary>A tick in twenty (seeded) spends a whole number of milliseconds of CPU time, 2 to <see cref="RandomCostSettings.MaxMs"/>; the others nothing.</summary>
+[PluginType("random_cost", Description = "test: random tick costs")]
+public sealed class RandomCostPlugin : Plugin<RandomCostSettings>
+{
+    private readonly Random _random;
+
+    public RandomCostPlugin(RandomCostSettings settings, PluginContext context)
+        : base(settings, context)
+    {
+        _random = new Random((int)settings.Seed);
+        DeclareOutput("x", SafeValue.Zero, "", "nothing");
+    }
+
+    /// <summary>Every slow tick and its cost, ms (sized up front: a tick allocates nothing).</summary>
+    public List<(long Tick, int Ms)> SlowTicks { get; } = new(10_000);
+
+    public override void Tick(in TickContext context)
+    {
+        if (context.Index == 0 || _random.Next(20) != 0)
+        {
+            return;
+        }
+
+        var ms = _random.Next(2, (int)Settings.MaxMs + 1);
+        SlowTicks.Add((context.Index, ms));
+        var until = ThreadCpuClock.NowNs() + (ms * 1_000_000L);
+        while (ThreadCpuClock.NowNs() < until)
+        {
+        }
+    }
+}
+
 /// <summary>Throws in every tick from <see cref="MisbehaviourSettings.FromTick"/>; its output drives a jaw of the robot.</summary>
 [PluginType("thrower", Description = "test: a plug-in that faults")]
 public sealed class ThrowerPlugin : Plugin<MisbehaviourSettings>
@@ -124,6 +168,43 @@ public sealed class LoopWatchTests : IDisposable
         Assert.Equal((SafetyCheck.DeadlineMiss, "plug-in 'slow' (CpuBurnerPlugin), the slowest of the last tick", true), (trip.Check, trip.Joint, trip.Soft));
         Assert.True(trip.Measured > 10, $"{trip.Measured} ms"); // the stall limit: 10 loop periods
         Assert.Equal(RunLevel.PedalUp, session.Supervisor.Level);
+    }
+
+    [Theory]
+    [InlineData(1, 5)]
+    [InlineData(2, 5)]
+    [InlineData(3, 9)]
+    [InlineData(4, 14)]
+    [InlineData(5, 14)]
+    public void Random_tick_costs_on_the_virtual_clock_are_missed_by_their_length_and_trip_only_past_the_stall_limit(int seed, int maxMs)
+    {
+        var graph = Graph($"costs{seed}", "random_cost", $$"""{ "seed": {{seed}}, "max_ms": {{maxMs}} }""");
+        using var session = RobotSession.Open(new SessionOptions { GraphPath = graph }, Catalog());
+        session.Supervisor.PedalDown("pedal");
+        session.RunVirtual(400);
+
+        // A tick costing k ms (a little more, with the rest of the graph) ends after its deadline and overruns k - 1
+        // more slots: k misses, as the loop counts them on its own thread, and the instants it overran are skipped.
+        // One more when the rest of a slow tick takes it past one more instant, and one for the first-time costs of the
+        // graph's first measured tick (loading, not compiling: that is left out).
+        var slow = session.Graph.Program.Order.OfType<RandomCostPlugin>().Single().SlowTicks.Select(s => s.Ms).ToList();
+        Assert.NotEmpty(slow);
+        var least = slow.Sum();
+        Assert.InRange(session.Loop.Statistics.DeadlineMisses, least, least + slow.Count + 1);
+        Assert.Equal(400, session.Loop.TickCount); // the slots overrun were skipped, not counted as ticks
+
+        // The supervisor trips (soft, naming the plug-in) when a tick kept the loop from ticking for longer than the
+        // stall limit (10 loop periods) while it drove the arms, and not for shorter ones.
+        var longest = slow.Max();
+        if (longest >= 11)
+        {
+            var trip = session.Supervisor.Trips[0];
+            Assert.Equal((SafetyCheck.DeadlineMiss, $"plug-in 'costs{seed}' (RandomCostPlugin), the slowest of the last tick", true), (trip.Check, trip.Joint, trip.Soft));
+        }
+        else if (longest <= 8)
+        {
+            Assert.Empty(session.Supervisor.Trips);
+        }
     }
 
     [Fact]
