@@ -203,7 +203,7 @@ public sealed class EditorPageTests(EditorFixture console)
     private async Task<IPage> Open(int width = 2560, int height = 1440)
     {
         var page = await console.Browser.NewPageAsync(new() { ViewportSize = new() { Width = width, Height = height } });
-        await page.GotoAsync(new Uri(console.Server.BaseUrl, "#editor").ToString());
+        await page.GotoAsync(ConsoleFixture.PageUrl(console.Server, "editor"));
         await page.Locator(".ged-type[data-type=clutch]").WaitForAsync();
         await page.Locator("[data-testid=problems][data-count]").WaitForAsync();
         return page;
@@ -211,7 +211,7 @@ public sealed class EditorPageTests(EditorFixture console)
 
     private static async Task Close(IPage page)
     {
-        await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client') } })");
+        await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client'), Authorization: 'Bearer ' + sessionStorage.getItem('rc-console-token') } })");
         await page.CloseAsync();
     }
 }
