@@ -11,6 +11,14 @@ public static class TlsCertificate
     public static X509Certificate2 Load(string certificatePath, string? keyPath = null)
     {
         ArgumentException.ThrowIfNullOrEmpty(certificatePath);
+        foreach (var (option, path) in new[] { ("--https-cert", certificatePath), ("--https-key", keyPath) })
+        {
+            if (path is not null && !File.Exists(path))
+            {
+                throw new FormatException($"{option} '{path}': no such file");
+            }
+        }
+
         try
         {
             var pkcs12 = keyPath is null && Path.GetExtension(certificatePath).ToUpperInvariant() is ".PFX" or ".P12";
@@ -27,7 +35,7 @@ public static class TlsCertificate
         }
         catch (Exception ex) when (ex is CryptographicException or IOException or UnauthorizedAccessException or ArgumentException)
         {
-            throw new FormatException($"--https-cert '{certificatePath}'{(keyPath is null ? "" : $" --https-key '{keyPath}'")}: cannot load the certificate ({ex.GetType().Name})");
+            throw new FormatException($"--https-cert '{certificatePath}'{(keyPath is null ? "" : $" --https-key '{keyPath}'")}: cannot load the certificate ({(ex is CryptographicException ? "not a PKCS#12 file without a password, nor a PEM certificate with its key" : "unreadable")})");
         }
     }
 }
