@@ -46,8 +46,8 @@ public sealed record ConsoleServerOptions
 /// <param name="Editor">Graph-file work.</param>
 public sealed record ConsoleRateLimits(RateLimit Bus, RateLimit Editor)
 {
-    /// <summary>4 bus requests at once, one more per second; 20 editor requests at once, 10 more per second.</summary>
-    public static ConsoleRateLimits Default { get; } = new(new RateLimit(4, 1, TimeSpan.FromSeconds(1)), new RateLimit(20, 10, TimeSpan.FromSeconds(1)));
+    /// <summary>8 bus requests at once, 2 more per second; 20 editor requests at once, 10 more per second.</summary>
+    public static ConsoleRateLimits Default { get; } = new(new RateLimit(8, 2, TimeSpan.FromSeconds(1)), new RateLimit(20, 10, TimeSpan.FromSeconds(1)));
 }
 
 /// <summary>A token bucket: <paramref name="Burst"/> requests at once, <paramref name="PerPeriod"/> more each <paramref name="Period"/>.</summary>

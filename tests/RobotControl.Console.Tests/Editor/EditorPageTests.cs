@@ -65,6 +65,8 @@ public sealed class EditorPageTests(EditorFixture console)
         await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync(new() { Timeout = 15000 });
         Assert.True(await page.GetByTestId("start").IsEnabledAsync());
         Assert.Equal(3 + 1 + 1, await page.Locator(".connection.delayed").CountAsync()); // forces, force_enable, the clutch's follow
+        await page.Locator("#claim").ClickAsync(); // saving is the operator's
+        await page.Locator("#role[data-role=operator]").WaitForAsync();
         await page.GetByTestId("file-name").FillAsync("built-in-editor.json");
         await page.GetByTestId("save").ClickAsync();
         await page.Locator("#message.ok").Filter(new() { HasTextString = "saved built-in-editor.json" }).WaitForAsync();
