@@ -60,13 +60,17 @@ public sealed class ConsoleServer : IAsyncDisposable
         var token = options.Token ?? AccessControl.NewToken();
         var builder = WebApplication.CreateSlimBuilder();
         builder.Logging.ClearProviders();
-        builder.WebHost.ConfigureKestrel(k => k.Listen(bind.Address, bind.Port, listen =>
+        builder.WebHost.ConfigureKestrel(k =>
         {
-            if (options.Certificate is { } certificate)
+            k.Limits.MaxRequestBodySize = ApiBodies.MaxBytes;
+            k.Listen(bind.Address, bind.Port, listen =>
             {
-                listen.UseHttps(certificate);
-            }
-        }));
+                if (options.Certificate is { } certificate)
+                {
+                    listen.UseHttps(certificate);
+                }
+            });
+        });
         RateLimits.Add(builder.Services, options.RateLimits);
         var app = builder.Build();
         var server = new ConsoleServer(app, token, new OperatorRole(options.Time));

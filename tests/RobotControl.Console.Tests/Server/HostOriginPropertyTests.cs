@@ -30,6 +30,24 @@ public sealed class HostOriginPropertyTests
     }
 
     [Fact]
+    public async Task E_stop_is_outside_the_rate_limits_and_the_stream_cap()
+    {
+        using var session = ConsoleFixture.VirtualSession();
+        var spent = new ConsoleRateLimits(new RateLimit(1, 1, TimeSpan.FromMinutes(10)), new RateLimit(1, 1, TimeSpan.FromMinutes(10)));
+        await using var server = await ConsoleServer.StartAsync(session, new ConsoleServerOptions { Bind = BindAddress.Parse("127.0.0.1:0"), RateLimits = spent, MaxStreams = 1 });
+        using var client = ConsoleFixture.Client(server, "busy-client");
+        Assert.Equal(HttpStatusCode.Forbidden, (await client.PostAsync("api/controllers/1/reload", null)).StatusCode);
+        Assert.Equal(HttpStatusCode.TooManyRequests, (await client.PostAsync("api/controllers/1/reload", null)).StatusCode); // its bucket is empty
+        using var stream = new System.Net.WebSockets.ClientWebSocket();
+        await stream.ConnectAsync(new Uri($"ws://{server.BaseUrl.Authority}/api/stream?token={server.Token}"), CancellationToken.None); // the one stream place taken
+
+        var response = await client.PostAsync("api/estop", null);
+
+        Assert.Equal(HttpStatusCode.OK, response.StatusCode);
+        Assert.Equal("E_STOP", session.Status.RobotState);
+    }
+
+    [Fact]
     public async Task Only_an_allowed_host_with_its_own_origin_and_the_token_changes_anything_and_e_stop_always_stops()
     {
         using var session = ConsoleFixture.VirtualSession();
