@@ -116,21 +116,6 @@ public sealed class SecurityTests(ConsoleFixture console)
     }
 
     [Fact]
-    public async Task A_body_over_the_bound_is_a_json_400_and_nothing_is_applied()
-    {
-        using var http = await console.Operator("huge-body");
-        var before = ConsoleFixture.Parameter(await ConsoleFixture.Motor(http, "right.elbow"), "kp");
-        var body = new StringContent($"{{\"value\": 1, \"pad\": \"{new string('x', 5 * 1024 * 1024)}\"}}", System.Text.Encoding.UTF8, "application/json");
-
-        var response = await http.PutAsync("api/motors/right.elbow/parameters/kp", body);
-
-        Assert.Equal(HttpStatusCode.BadRequest, response.StatusCode);
-        Assert.Equal("kp: the body is over 4 MiB", (await response.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("error").GetString());
-        Assert.Equal(before, ConsoleFixture.Parameter(await ConsoleFixture.Motor(http, "right.elbow"), "kp"));
-        console.ReleaseOperator();
-    }
-
-    [Fact]
     public async Task Beyond_its_rate_a_client_gets_429_with_retry_after_and_other_clients_do_not()
     {
         var limits = new ConsoleRateLimits(new RateLimit(2, 1, TimeSpan.FromMinutes(10)), ConsoleRateLimits.Default.Editor);
