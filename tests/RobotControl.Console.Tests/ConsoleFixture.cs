@@ -88,10 +88,20 @@ public sealed class ConsoleFixture : IAsyncLifetime
     /// <summary>An HTTP client that names itself <paramref name="client"/>.</summary>
     public HttpClient Client(string client)
     {
-        var http = new HttpClient { BaseAddress = Server.BaseUrl };
+        return ConsoleFixture.Client(Server, client);
+    }
+
+    /// <summary>An HTTP client of <paramref name="server"/> that names itself <paramref name="client"/> and carries the session's token.</summary>
+    public static HttpClient Client(ConsoleServer server, string client)
+    {
+        var http = new HttpClient { BaseAddress = server.BaseUrl };
         http.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, client);
+        http.DefaultRequestHeaders.Authorization = new System.Net.Http.Headers.AuthenticationHeaderValue("Bearer", server.Token);
         return http;
     }
+
+    /// <summary>The page at <paramref name="hash"/> as the printed URL opens it (with the token).</summary>
+    public static string PageUrl(ConsoleServer server, string hash) => $"{server.OpenUrl}#{hash}";
 
     /// <summary>An HTTP client holding the operator role (taken from whoever held it).</summary>
     public async Task<HttpClient> Operator(string client)

@@ -100,7 +100,7 @@ internal sealed class EStopBenchCommand : IBenchCommand
     {
         var loadStart = RealtimeBenchCommand.LoadAverage();
         var since = Stopwatch.GetTimestamp();
-        var flood = name == "flood" ? FloodLoad.Start(run.BaseUrl, settings.FloodRate, settings.FloodClients) : null;
+        var flood = name == "flood" ? FloodLoad.Start(run.BaseUrl, run.Token, settings.FloodRate, settings.FloodClients) : null;
         var samples = new StopSample[settings.Stops];
         var pendingAtStop = 0L;
         double floodRate = 0;

@@ -37,6 +37,9 @@ internal sealed class EStopRun : IAsyncDisposable
     /// <summary>The server's base URL.</summary>
     public Uri BaseUrl => _server.BaseUrl;
 
+    /// <summary>The console's access token.</summary>
+    public string Token => _server.Token;
+
     /// <summary>Brings the console up on <paramref name="graph"/>; stops end at a frame of kind <paramref name="wanted"/>.</summary>
     public static async Task<EStopRun> Start(string graph, StopFrame wanted)
     {
@@ -163,6 +166,7 @@ internal sealed class EStopRun : IAsyncDisposable
     {
         var client = new HttpClient { BaseAddress = _server.BaseUrl };
         client.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, name);
+        client.DefaultRequestHeaders.Authorization = new System.Net.Http.Headers.AuthenticationHeaderValue("Bearer", _server.Token);
         return client;
     }
 

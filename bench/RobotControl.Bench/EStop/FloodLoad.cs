@@ -16,14 +16,14 @@ internal sealed class FloodLoad : IAsyncDisposable
     private long _answered;
     private long _failed;
 
-    private FloodLoad(Uri baseUrl, double ratePerSecond, int clients)
+    private FloodLoad(Uri baseUrl, string token, double ratePerSecond, int clients)
     {
         var period = clients / ratePerSecond;
-        _workers = [.. Enumerable.Range(0, clients).Select(i => Task.Run(() => Worker(baseUrl, period, i)))];
+        _workers = [.. Enumerable.Range(0, clients).Select(i => Task.Run(() => Worker(baseUrl, token, period, i)))];
     }
 
     /// <summary>Starts <paramref name="clients"/> clients sending <paramref name="ratePerSecond"/> requests per second together.</summary>
-    public static FloodLoad Start(Uri baseUrl, double ratePerSecond, int clients) => new(baseUrl, ratePerSecond, clients);
+    public static FloodLoad Start(Uri baseUrl, string token, double ratePerSecond, int clients) => new(baseUrl, token, ratePerSecond, clients);
 
     /// <summary>Requests answered per second since the start.</summary>
     public double AnsweredPerSecond => Interlocked.Read(ref _answered) / Stopwatch.GetElapsedTime(_start).TotalSeconds;
@@ -31,9 +31,10 @@ internal sealed class FloodLoad : IAsyncDisposable
     /// <summary>Requests that failed or were not answered 200.</summary>
     public long Failed => Interlocked.Read(ref _failed);
 
-    private async Task Worker(Uri baseUrl, double periodSeconds, int index)
+    private async Task Worker(Uri baseUrl, string token, double periodSeconds, int index)
     {
         using var client = new HttpClient { BaseAddress = baseUrl };
+        client.DefaultRequestHeaders.Authorization = new System.Net.Http.Headers.AuthenticationHeaderValue("Bearer", token);
         client.DefaultRequestHeaders.Add("X-Console-Client", $"bench-flood-{index}");
         var period = (long)(periodSeconds * Stopwatch.Frequency);
         var next = Stopwatch.GetTimestamp() + (period * index / _workers.Length);

@@ -42,8 +42,8 @@ internal static class BrowserMeasures
     // away, wait until a streamed value has moved 0.1 degree, wait for the next animation frame, note the time.
     private const string LatencyScript = """
         async ({ signal, motor, trials, client }) => {
-          const post = (path, body) => fetch('/api' + path, { method: 'POST', headers: { 'Content-Type': 'application/json', 'X-Console-Client': client }, body: JSON.stringify(body) });
-          const ws = new WebSocket(`ws://${location.host}/api/stream`);
+          const post = (path, body) => fetch('/api' + path, { method: 'POST', headers: { 'Content-Type': 'application/json', 'X-Console-Client': client, Authorization: 'Bearer ' + sessionStorage.getItem('rc-console-token') }, body: JSON.stringify(body) });
+          const ws = new WebSocket(`ws://${location.host}/api/stream?token=${sessionStorage.getItem('rc-console-token')}`);
           let latest = NaN, waiter = null;
           ws.onmessage = (e) => {
             const m = JSON.parse(e.data);
@@ -87,10 +87,10 @@ internal static class BrowserMeasures
                 Headless = true,
                 Args = ["--no-sandbox", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"],
             });
-            var (first, loadEvent) = await FirstLoads(browser, server.BaseUrl);
+            var (first, loadEvent) = await FirstLoads(browser, server.OpenUrl);
             var right = session.Model.Arms.First(a => a.Name == "right");
             var signal = right.PositionSignals[right.Joints.ToList().IndexOf("right_elbow")];
-            var (total, afterReply) = await Latency(browser, server.BaseUrl, signal);
+            var (total, afterReply) = await Latency(browser, server.OpenUrl, server.Token, signal);
             var (js, gzip) = await Bundle(server.BaseUrl);
             return new BrowserResult(total, afterReply, first, loadEvent, js, gzip);
         }
@@ -114,10 +114,11 @@ internal static class BrowserMeasures
         return (first, loadEvent);
     }
 
-    private static async Task<(List<double> Total, List<double> AfterReply)> Latency(IBrowser browser, Uri url, string signal)
+    private static async Task<(List<double> Total, List<double> AfterReply)> Latency(IBrowser browser, Uri url, string token, string signal)
     {
         using var http = new HttpClient { BaseAddress = url };
         http.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, Client);
+        http.DefaultRequestHeaders.Authorization = new System.Net.Http.Headers.AuthenticationHeaderValue("Bearer", token);
         (await http.PostAsync("api/operator", null)).EnsureSuccessStatusCode();
         (await http.PostAsJsonAsync("api/pedal", new { down = true })).EnsureSuccessStatusCode();
         try

@@ -57,8 +57,9 @@ internal static class StreamingClients
     private static async Task<(long Frames, long Rows)> Client(ConsoleServer server, List<string> signals, CancellationToken stop)
     {
         using var http = new HttpClient { BaseAddress = server.BaseUrl };
+        http.DefaultRequestHeaders.Authorization = new System.Net.Http.Headers.AuthenticationHeaderValue("Bearer", server.Token);
         using var socket = new ClientWebSocket();
-        await socket.ConnectAsync(new Uri($"ws://{server.BaseUrl.Authority}/api/stream"), CancellationToken.None);
+        await socket.ConnectAsync(new Uri($"ws://{server.BaseUrl.Authority}/api/stream?token={server.Token}"), CancellationToken.None);
         var subscribe = $"{{\"subscribe\":[{string.Join(',', signals.Select(s => $"\"{s}\""))}],\"rateHz\":60}}";
         await socket.SendAsync(Encoding.UTF8.GetBytes(subscribe), WebSocketMessageType.Text, true, CancellationToken.None);
         var poll = Task.Run(async () =>

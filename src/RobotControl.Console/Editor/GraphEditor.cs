@@ -31,7 +31,12 @@ public sealed class GraphEditor
         Folder = folder;
         _catalog = catalog;
         Runner = runner;
+        var robot = RobotOf(runner.GraphPath);
+        Files = new ConfinedFiles(Folder.Root, robot is null ? null : Path.GetDirectoryName(Path.Combine(Folder.Root, robot)));
     }
+
+    /// <summary>The files the editor may read: the graphs folder and the running graph's robot folder.</summary>
+    public ConfinedFiles Files { get; }
 
     /// <summary>The graphs folder.</summary>
     public GraphFolder Folder { get; }
@@ -40,12 +45,23 @@ public sealed class GraphEditor
     public GraphRunner Runner { get; }
 
     /// <summary>The palette; the robot node is that of <paramref name="robotFile"/> (as a graph names it), else of the running graph's robot.</summary>
-    public CatalogView Catalog(string? robotFile) => EditorCatalog.Describe(_catalog, Folder, robotFile ?? RobotOf(Runner.GraphPath));
+    /// <returns>The palette, or null with <paramref name="refusal"/> when the robot file is outside the folders.</returns>
+    public CatalogView? Catalog(string? robotFile, out string refusal)
+    {
+        var robot = robotFile ?? RobotOf(Runner.GraphPath);
+        refusal = robot is null ? string.Empty : Files.Problem("robot", robot, Path.Combine(Folder.Root, robot)) ?? string.Empty;
+        return refusal.Length > 0 ? null : EditorCatalog.Describe(_catalog, Folder, robot);
+    }
 
     /// <summary>Checks graph text as the loader does; <paramref name="name"/> places it in the folder (null: unsaved).</summary>
     /// <returns>Every problem (none when the graph loads) and each instance's ports, or null with <paramref name="refusal"/> when the name is refused.</returns>
     public CheckView? Check(string? name, string json, out string refusal)
     {
+        if (Folder.Resolve(name ?? UntitledName, out refusal) is not null && GraphFileReferences.Problems(json, _catalog, Folder.Root, Files) is { Count: > 0 } refused)
+        {
+            return new CheckView(refused, new Dictionary<string, PluginPorts>()); // nothing is created that would open those files
+        }
+
         var problems = Load(name, json, out refusal, out var loaded);
         if (problems is null)
         {
@@ -92,13 +108,7 @@ public sealed class GraphEditor
             return null;
         }
 
-        if (!File.Exists(path))
-        {
-            refusal = $"graph '{name}': no such file in the graphs folder";
-            return null;
-        }
-
-        return File.ReadAllText(path);
+        return Files.ReadText("graph", name, path, out refusal);
     }
 
     private IReadOnlyList<ProblemView>? Load(string? name, string json, out string refusal, out LoadedGraph? loaded)
@@ -108,6 +118,12 @@ public sealed class GraphEditor
         if (path is null)
         {
             return null;
+        }
+
+        var refused = GraphFileReferences.Problems(json, _catalog, Folder.Root, Files);
+        if (refused.Count > 0)
+        {
+            return refused;
         }
 
         try
@@ -124,6 +140,11 @@ public sealed class GraphEditor
 
     private RobotDefinition? TryRobot(string file)
     {
+        if (Files.Problem("robot", file, Path.Combine(Folder.Root, file)) is not null)
+        {
+            return null;
+        }
+
         try
         {
             return RobotLoader.Load(Path.Combine(Folder.Root, file));

@@ -6,6 +6,9 @@ namespace RobotControl.WebConsole.Editor;
 /// </summary>
 public sealed class GraphFolder
 {
+    /// <summary>The longest graph file name accepted.</summary>
+    public const int MaxNameLength = 100;
+
     /// <summary>Serves the graphs in <paramref name="root"/>.</summary>
     public GraphFolder(string root)
     {
@@ -27,6 +30,12 @@ public sealed class GraphFolder
         if (string.IsNullOrWhiteSpace(name))
         {
             problem = "graph: give a file name, e.g. teleop-lb.json";
+            return null;
+        }
+
+        if (name.Length > MaxNameLength)
+        {
+            problem = $"name: a graph file name has at most {MaxNameLength} characters (this one has {name.Length})";
             return null;
         }
 

@@ -1,25 +1,28 @@
 using System.Security.Cryptography;
 using System.Text;
 using Microsoft.AspNetCore.Http;
+using RobotControl.WebConsole.Session;
 
 namespace RobotControl.WebConsole.Server;
 
 /// <summary>
-/// Who may talk to the console. With a token (required on any non-loopback bind) every request must carry it: as
-/// <c>Authorization: Bearer &lt;token&gt;</c>, the <see cref="CookieName"/> cookie, or <c>?token=</c> on the page's
-/// first load (which sets the cookie); otherwise 401. Requests that change something and WebSocket upgrades must come
-/// from the console's own origin when the browser names one (403 otherwise), so another site cannot drive the robot
-/// through a visitor's browser.
+/// Who may talk to the console, checked in this order for every request (docs/console.md, "Security"):
+/// <list type="number">
+/// <item>the <c>Host</c> header must be one of <see cref="HostAllowList"/>'s (403 otherwise: DNS rebinding);</item>
+/// <item><c>POST /api/estop</c> is answered right here, before the token, the origin, the rate limits and routing:
+/// stopping is never a privilege and never waits;</item>
+/// <item>every other <c>/api</c> request needs the session's token, as <c>Authorization: Bearer &lt;token&gt;</c> or
+/// <c>?token=</c> (the WebSocket; 401 otherwise). The pages themselves (no session data) are served without it: the
+/// page reads the token from the URL the console printed;</item>
+/// <item>requests that change something and WebSocket upgrades must come from the console's own origin when the
+/// browser names one (403 otherwise).</item>
+/// </list>
+/// Every response gets the security headers (<see cref="SecurityHeaders"/>), and an unexpected failure is a JSON 500
+/// with one line, never an empty body or a stack trace.
 /// </summary>
-internal sealed class AccessControl(string? token)
+internal sealed class AccessControl(string token, HostAllowList hosts, IConsoleSession session)
 {
-    /// <summary>The cookie that carries the token after the first load.</summary>
-    public const string CookieName = "rc_token";
-
-    private readonly byte[]? _token = token is null ? null : Encoding.UTF8.GetBytes(token);
-
-    /// <summary>True when requests need the token.</summary>
-    public bool RequiresToken => _token is not null;
+    private readonly byte[] _token = Encoding.UTF8.GetBytes(token);
 
     /// <summary>A new random token (URL-safe).</summary>
     public static string NewToken() => Convert.ToHexStringLower(RandomNumberGenerator.GetBytes(16));
@@ -28,20 +31,25 @@ internal sealed class AccessControl(string? token)
     public async Task Invoke(HttpContext context, RequestDelegate next)
     {
         var request = context.Request;
-        if (_token is not null)
+        var api = request.Path.StartsWithSegments("/api", StringComparison.Ordinal);
+        SecurityHeaders.Add(context.Response, request, api);
+        if (!hosts.Allows(request.Host))
         {
-            var fromQuery = request.Query["token"].ToString();
-            var given = BearerToken(request) ?? (fromQuery.Length > 0 ? fromQuery : request.Cookies[CookieName]);
-            if (given is null || !CryptographicOperations.FixedTimeEquals(Encoding.UTF8.GetBytes(given), _token))
-            {
-                await Refuse(context, StatusCodes.Status401Unauthorized, "this console needs its access token: open the URL it printed (with ?token=...) or send Authorization: Bearer <token>").ConfigureAwait(false);
-                return;
-            }
+            await Refuse(context, StatusCodes.Status403Forbidden, $"host '{request.Host}' is not a name of this console (add it with --allowed-host)").ConfigureAwait(false);
+            return;
+        }
 
-            if (fromQuery.Length > 0)
-            {
-                context.Response.Cookies.Append(CookieName, fromQuery, new CookieOptions { HttpOnly = true, SameSite = SameSiteMode.Strict, Path = "/" });
-            }
+        if (HttpMethods.IsPost(request.Method) && request.Path.Equals("/api/estop", StringComparison.Ordinal))
+        {
+            // Any console, watching or operating, with or without the token: stopping is never a privilege.
+            await ApiEndpoints.Result(await session.EmergencyStopAsync().ConfigureAwait(false)).ExecuteAsync(context).ConfigureAwait(false);
+            return;
+        }
+
+        if (api && !HasToken(request))
+        {
+            await Refuse(context, StatusCodes.Status401Unauthorized, "this console needs its access token: open the URL it printed (with ?token=...) or send Authorization: Bearer <token>").ConfigureAwait(false);
+            return;
         }
 
         var changes = !HttpMethods.IsGet(request.Method) && !HttpMethods.IsHead(request.Method);
@@ -51,13 +59,21 @@ internal sealed class AccessControl(string? token)
             return;
         }
 
-        await next(context).ConfigureAwait(false);
+        try
+        {
+            await next(context).ConfigureAwait(false);
+        }
+        catch (Exception ex) when (!context.Response.HasStarted && ex is not OperationCanceledException)
+        {
+            await Refuse(context, StatusCodes.Status500InternalServerError, $"{request.Method} {request.Path}: the console failed ({ex.GetType().Name}); nothing was changed by this request's answer").ConfigureAwait(false);
+        }
     }
 
-    private static string? BearerToken(HttpRequest request)
+    private bool HasToken(HttpRequest request)
     {
         var header = request.Headers.Authorization.ToString();
-        return header.StartsWith("Bearer ", StringComparison.Ordinal) ? header["Bearer ".Length..].Trim() : null;
+        var given = header.StartsWith("Bearer ", StringComparison.Ordinal) ? header["Bearer ".Length..].Trim() : request.Query["token"].ToString();
+        return given.Length > 0 && CryptographicOperations.FixedTimeEquals(Encoding.UTF8.GetBytes(given), _token);
     }
 
     private static bool SameOrigin(HttpRequest request)
@@ -66,10 +82,11 @@ internal sealed class AccessControl(string? token)
         return origin.Length == 0 || string.Equals(origin, $"{request.Scheme}://{request.Host}", StringComparison.OrdinalIgnoreCase);
     }
 
-    private static Task Refuse(HttpContext context, int status, string message)
+    /// <summary>Answers <paramref name="status"/> with <paramref name="message"/> as the API's error body.</summary>
+    public static Task Refuse(HttpContext context, int status, string message)
     {
         context.Response.StatusCode = status;
-        return context.Response.WriteAsJsonAsync(new ApiError(message));
+        return context.Response.WriteAsJsonAsync(new ApiError(message), ConsoleJson.Options);
     }
 }
 

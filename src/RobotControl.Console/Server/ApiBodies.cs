@@ -6,6 +6,9 @@ namespace RobotControl.WebConsole.Server;
 /// <summary>Request bodies of the API.</summary>
 internal static class ApiBodies
 {
+    /// <summary>The largest request body the console reads (a graph is a few kB).</summary>
+    public const long MaxBytes = 4 * 1024 * 1024;
+
     /// <summary>Reads a JSON body as <typeparamref name="T"/>; null and the 400 message when it is missing or malformed.</summary>
     public static async Task<(T? Body, string? Problem)> Read<T>(HttpRequest request, string what)
         where T : class
@@ -18,6 +21,10 @@ internal static class ApiBodies
         catch (JsonException ex)
         {
             return (null, $"{what}: malformed JSON body ({ex.Message.Split(". ")[0]})");
+        }
+        catch (BadHttpRequestException ex) when (ex.StatusCode == StatusCodes.Status413PayloadTooLarge)
+        {
+            return (null, $"{what}: the body is over {MaxBytes / (1024 * 1024)} MiB");
         }
     }
 }

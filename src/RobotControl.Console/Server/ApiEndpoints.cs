@@ -6,15 +6,20 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.WebConsole.Server;
 
 /// <summary>
-/// The JSON API (see docs/console.md). Reads are open to every console; actions need the operator role, except the
-/// emergency stop: stopping is never a privilege, so every console, watching or operating, may stop the robot.
+/// The JSON API (see docs/console.md). Reads are open to every console with the token; actions (and re-reading
+/// parameters, which costs bus time) need the operator role. The emergency stop is not here: <see cref="AccessControl"/>
+/// answers it for every console, watching or operating, with or without the token.
 /// </summary>
 internal static class ApiEndpoints
 {
     public static void Map(IEndpointRouteBuilder app, IConsoleSession session, OperatorRole role)
     {
         var api = app.MapGroup("/api");
-        api.MapGet("/status", (HttpContext http) => Json(new { session.Status, Operator = OperatorView(http, role) }));
+        api.MapGet("/status", (HttpContext http) =>
+        {
+            role.IsHeldBy(ClientOf(http)); // the holder's page polls: an open operator page keeps the role, a closed one loses it
+            return Json(new { session.Status, Operator = OperatorView(http, role) });
+        });
         api.MapGet("/controllers", () => Json(session.Controllers));
         api.MapGet("/signals", () => Json(session.Signals.Names.Select((n, i) => new { Name = n, Unit = session.Signals.Units[i] })));
         api.MapGet("/events", (long? after) => Json(session.EventsAfter(after ?? 0)));
@@ -44,11 +49,10 @@ internal static class ApiEndpoints
             return Json(OperatorView(http, role));
         });
 
-        api.MapPost("/controllers/{id:int}/reload", async (int id) => Result(await session.ReloadParametersAsync(id).ConfigureAwait(false)));
-
-        api.MapPost("/estop", async () => Result(await session.EmergencyStopAsync().ConfigureAwait(false))); // any console: stopping is never a privilege
+        // POST /api/estop is answered by AccessControl, before the token, the rate limits and routing: any console may stop.
         var actions = OperatorOnly(api.MapGroup(string.Empty), role);
-        actions.MapPost("/discover", async () => Result(await session.DiscoverAsync().ConfigureAwait(false)));
+        actions.MapPost("/controllers/{id:int}/reload", async (int id) => Result(await session.ReloadParametersAsync(id).ConfigureAwait(false))).RequireRateLimiting(RateLimits.Bus);
+        actions.MapPost("/discover", async () => Result(await session.DiscoverAsync().ConfigureAwait(false))).RequireRateLimiting(RateLimits.Bus);
         actions.MapPost("/torque", async (HttpRequest request) =>
         {
             var (body, problem) = await ApiBodies.Read<TorqueBody>(request, "torque").ConfigureAwait(false);
@@ -66,12 +70,12 @@ internal static class ApiEndpoints
             var (body, problem) = await ApiBodies.Read<NameBody>(request, "name").ConfigureAwait(false);
             return body?.Name is { } name ? Result(await session.RenameAsync(id, name).ConfigureAwait(false)) : Error(StatusCodes.Status400BadRequest, problem ?? "name: give {\"name\": \"...\"}");
         });
-        actions.MapPost("/controllers/{id:int}/reboot", async (int id) => Result(await session.RebootAsync(id).ConfigureAwait(false)));
+        actions.MapPost("/controllers/{id:int}/reboot", async (int id) => Result(await session.RebootAsync(id).ConfigureAwait(false))).RequireRateLimiting(RateLimits.Bus);
         actions.MapPut("/motors/{motor}/parameters/{key}", async (string motor, string key, HttpRequest request) =>
         {
             var (body, problem) = await ApiBodies.Read<ValueBody>(request, key).ConfigureAwait(false);
             return body?.Value is { } v ? Result(await session.WriteParameterAsync(motor, key, v).ConfigureAwait(false)) : Error(StatusCodes.Status400BadRequest, problem ?? $"{key}: give {{\"value\": <number>}}");
-        });
+        }).RequireRateLimiting(RateLimits.Bus);
         actions.MapPost("/motors/{motor}/jog", async (string motor, HttpRequest request) =>
         {
             var (body, problem) = await ApiBodies.Read<JogBody>(request, "jog").ConfigureAwait(false);

@@ -3,6 +3,7 @@ using Microsoft.AspNetCore.Builder;
 using Microsoft.AspNetCore.Hosting;
 using Microsoft.AspNetCore.Hosting.Server;
 using Microsoft.AspNetCore.Hosting.Server.Features;
+using Microsoft.AspNetCore.Http;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Logging;
 using RobotControl.WebConsole.Session;
@@ -11,81 +12,100 @@ namespace RobotControl.WebConsole.Server;
 
 /// <summary>
 /// The console's web server: the pages (the built front-end) and the JSON/WebSocket API over one
-/// <see cref="IConsoleSession"/>, with access control (token on non-loopback binds, same-origin actions and
-/// WebSockets, one operator at a time).
+/// <see cref="IConsoleSession"/>, behind <see cref="AccessControl"/> (host allow-list, the session's token, same-origin
+/// actions and WebSockets), one operator at a time, per-client rate limits on expensive endpoints and a cap on streams.
 /// </summary>
 public sealed class ConsoleServer : IAsyncDisposable
 {
     private readonly WebApplication _app;
 
-    private ConsoleServer(WebApplication app, string? token)
+    private ConsoleServer(WebApplication app, string token, OperatorRole role)
     {
         _app = app;
         Token = token;
+        Operator = role;
     }
 
-    /// <summary>The access token (null on a loopback bind without one).</summary>
-    public string? Token { get; }
+    /// <summary>The session's access token (given or generated).</summary>
+    public string Token { get; }
 
     /// <summary>The base URL, e.g. <c>http://127.0.0.1:5080/</c>.</summary>
     public Uri BaseUrl { get; private set; } = new("http://127.0.0.1/");
 
-    /// <summary>The URL to open: the base URL, with the token when there is one.</summary>
-    public Uri OpenUrl => Token is null ? BaseUrl : new Uri(BaseUrl, $"?token={Token}");
+    /// <summary>The URL to open: the base URL with <c>?token=</c> (the page keeps the token and strips it from the address bar).</summary>
+    public Uri OpenUrl => new(BaseUrl, $"?token={Token}");
 
     /// <summary>The operator role.</summary>
-    public OperatorRole Operator { get; private set; } = null!;
+    public OperatorRole Operator { get; }
+
+    /// <summary>Starts serving <paramref name="session"/> on <paramref name="bind"/> (see <see cref="StartAsync(IConsoleSession, ConsoleServerOptions)"/>).</summary>
+    public static Task<ConsoleServer> StartAsync(IConsoleSession session, BindAddress bind, string? token, TimeProvider? time = null, Editor.GraphEditor? editor = null, Func<HttpContext, RequestDelegate, Task>? first = null) =>
+        StartAsync(session, new ConsoleServerOptions { Bind = bind, Token = token, Time = time ?? TimeProvider.System, Editor = editor, First = first });
 
     /// <summary>
-    /// Starts serving <paramref name="session"/> on <paramref name="bind"/>. A non-loopback bind without
-    /// <paramref name="token"/> gets a generated one. With <paramref name="editor"/>, the graph editor's API too.
-    /// <paramref name="first"/> (benchmarks, diagnostics) is the outermost middleware: it sees every request as soon as
-    /// the server has read its headers, before access control and routing.
+    /// Starts serving <paramref name="session"/> as <paramref name="options"/> say: with the given token or a random
+    /// one, HTTPS when a certificate is given, the graph editor's API when there is an editor.
     /// </summary>
-    public static async Task<ConsoleServer> StartAsync(IConsoleSession session, BindAddress bind, string? token, TimeProvider? time = null, Editor.GraphEditor? editor = null, Func<Microsoft.AspNetCore.Http.HttpContext, Microsoft.AspNetCore.Http.RequestDelegate, Task>? first = null)
+    /// <exception cref="FormatException">A token shorter than 8 characters.</exception>
+    public static async Task<ConsoleServer> StartAsync(IConsoleSession session, ConsoleServerOptions options)
     {
         ArgumentNullException.ThrowIfNull(session);
-        ArgumentNullException.ThrowIfNull(bind);
-        if (token is { Length: < 8 })
+        ArgumentNullException.ThrowIfNull(options);
+        if (options.Token is { Length: < 8 })
         {
             throw new FormatException("--token: give at least 8 characters");
         }
 
-        token ??= bind.IsLoopback ? null : AccessControl.NewToken();
+        var bind = options.Bind;
+        var token = options.Token ?? AccessControl.NewToken();
         var builder = WebApplication.CreateSlimBuilder();
         builder.Logging.ClearProviders();
-        builder.WebHost.ConfigureKestrel(k => k.Listen(bind.Address, bind.Port));
+        builder.WebHost.ConfigureKestrel(k =>
+        {
+            k.Limits.MaxRequestBodySize = ApiBodies.MaxBytes;
+            k.Listen(bind.Address, bind.Port, listen =>
+            {
+                if (options.Certificate is { } certificate)
+                {
+                    listen.UseHttps(certificate);
+                }
+            });
+        });
+        RateLimits.Add(builder.Services, options.RateLimits);
         var app = builder.Build();
-        var server = new ConsoleServer(app, token) { Operator = new OperatorRole(time ?? TimeProvider.System) };
-        var access = new AccessControl(token);
-        if (first is not null)
+        var server = new ConsoleServer(app, token, new OperatorRole(options.Time));
+        var host = PrintedHost(bind);
+        var access = new AccessControl(token, new HostAllowList(bind, options.AllowedHosts, host), session);
+        if (options.First is not null)
         {
-            app.Use(first);
+            app.Use(options.First);
         }
 
-        app.UseWebSockets(new WebSocketOptions { KeepAliveInterval = TimeSpan.FromSeconds(15) });
-        app.Use(access.Invoke);
+        app.UseWebSockets(new WebSocketOptions { KeepAliveInterval = TimeSpan.FromSeconds(15) }); // accepts nothing itself: lets access control tell an upgrade
+        app.Use(access.Invoke); // E-STOP is answered in here, before the rate limits and routing
+        app.UseRouting();
+        app.UseRateLimiter();
         ApiEndpoints.Map(app, session, server.Operator);
-        StreamEndpoint.Map(app, session);
-        if (editor is not null)
+        StreamEndpoint.Map(app, session, options.MaxStreams, options.StreamQueueFrames);
+        if (options.Editor is not null)
         {
-            GraphEndpoints.Map(app, editor, server.Operator);
+            GraphEndpoints.Map(app, options.Editor, server.Operator);
         }
 
+        app.Map("/api/{**rest}", (HttpRequest request) => ApiEndpoints.Error(StatusCodes.Status404NotFound, $"{request.Method} {request.Path}: no such API endpoint (see docs/console.md)"));
         var assets = new StaticAssets();
-        app.MapGet("/{**path}", (Microsoft.AspNetCore.Http.HttpContext http, string? path) => assets.Serve(http, path));
+        app.MapGet("/{**path}", (HttpContext http, string? path) => assets.Serve(http, path));
         await app.StartAsync().ConfigureAwait(false);
         var address = app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First();
         var port = new Uri(address).Port;
-        var host = bind.Address.Equals(IPAddress.Any) || bind.Address.Equals(IPAddress.IPv6Any) ? Dns.GetHostName() : bind.ToString().Split(':')[0];
-        if (bind.Address.AddressFamily == System.Net.Sockets.AddressFamily.InterNetworkV6 && !bind.Address.Equals(IPAddress.IPv6Any))
-        {
-            host = $"[{bind.Address}]";
-        }
-
-        server.BaseUrl = new Uri($"http://{host}:{port}/");
+        var scheme = options.Certificate is null ? "http" : "https";
+        server.BaseUrl = new Uri($"{scheme}://{(host.Contains(':', StringComparison.Ordinal) ? $"[{host}]" : host)}:{port}/");
         return server;
     }
+
+    /// <summary>The host of the printed URL: this machine's name on a wildcard bind, the bind address otherwise.</summary>
+    private static string PrintedHost(BindAddress bind) =>
+        bind.Address.Equals(IPAddress.Any) || bind.Address.Equals(IPAddress.IPv6Any) ? Dns.GetHostName() : bind.Address.ToString();
 
     /// <inheritdoc />
     public async ValueTask DisposeAsync()

@@ -6,13 +6,15 @@ using RobotControl.WebConsole.Editor;
 
 namespace RobotControl.WebConsole.Server;
 
-/// <summary>The graph editor's API under <c>/api/editor</c> (see docs/console.md). Start and stop need the operator role.</summary>
+/// <summary>The graph editor's API under <c>/api/editor</c> (see docs/console.md). Saving, start and stop need the operator role; the graph-file work is rate-limited per client.</summary>
 internal static class GraphEndpoints
 {
     public static void Map(IEndpointRouteBuilder app, GraphEditor editor, OperatorRole role)
     {
         var api = app.MapGroup("/api/editor");
-        api.MapGet("/catalog", (string? robot) => ApiEndpoints.Json(editor.Catalog(robot)));
+        api.MapGet("/catalog", (string? robot) => editor.Catalog(robot, out var refusal) is { } catalog
+            ? ApiEndpoints.Json(catalog)
+            : ApiEndpoints.Error(StatusCodes.Status400BadRequest, refusal)).RequireRateLimiting(RateLimits.Editor);
         api.MapGet("/graphs", () => ApiEndpoints.Json(new { Folder = Path.GetFileName(editor.Folder.Root), Graphs = editor.Folder.List() }));
         // Route values keep %2F escaped: unescape, so "sub%2Fx.json" is the refused "sub/x.json", not a file of that name.
         api.MapGet("/graphs/{name}", (string name) => editor.Read(Uri.UnescapeDataString(name), out var refusal) is { } text
@@ -24,16 +26,17 @@ internal static class GraphEndpoints
             return body is null ? Bad(problem)
                 : editor.Check(body.Name, body.Graph!.Value.GetRawText(), out var refusal) is { } check ? ApiEndpoints.Json(check)
                 : ApiEndpoints.Error(StatusCodes.Status400BadRequest, refusal);
-        });
-        api.MapPut("/graphs/{name}", async (string name, HttpRequest request) =>
+        }).RequireRateLimiting(RateLimits.Editor);
+        api.MapGet("/run", () => ApiEndpoints.Json(editor.Runner.View));
+
+        // Writing a file or switching the session: the operator's.
+        var actions = ApiEndpoints.OperatorOnly(api.MapGroup(string.Empty), role);
+        actions.MapPut("/graphs/{name}", async (string name, HttpRequest request) =>
         {
             var (body, problem) = await ReadGraph(request, "save").ConfigureAwait(false);
             name = Uri.UnescapeDataString(name);
             return body is null ? Bad(problem) : Refusing(editor.Save(name, body.Graph!.Value.GetRawText(), out var refusal), refusal, $"saved {name}", name);
-        });
-        api.MapGet("/run", () => ApiEndpoints.Json(editor.Runner.View));
-
-        var actions = ApiEndpoints.OperatorOnly(api.MapGroup(string.Empty), role);
+        }).RequireRateLimiting(RateLimits.Editor);
         actions.MapPost("/start", async (HttpRequest request) =>
         {
             var (body, problem) = await ReadGraph(request, "start").ConfigureAwait(false);
@@ -51,8 +54,8 @@ internal static class GraphEndpoints
 
             var run = await editor.Runner.StartAsync(editor.Folder.Resolve(name, out _)!).ConfigureAwait(false);
             return run.Running ? ApiEndpoints.Json(run) : ApiEndpoints.Error(StatusCodes.Status422UnprocessableEntity, run.Problem ?? $"{name} did not start");
-        });
-        actions.MapPost("/stop", async () => ApiEndpoints.Json(await editor.Runner.StopAsync().ConfigureAwait(false)));
+        }).RequireRateLimiting(RateLimits.Editor);
+        actions.MapPost("/stop", async () => ApiEndpoints.Json(await editor.Runner.StopAsync().ConfigureAwait(false))).RequireRateLimiting(RateLimits.Editor);
     }
 
     private static IResult Bad(string? problem) => ApiEndpoints.Error(StatusCodes.Status400BadRequest, problem ?? "give {\"graph\": {...}}");

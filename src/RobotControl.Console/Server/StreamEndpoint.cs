@@ -12,15 +12,18 @@ namespace RobotControl.WebConsole.Server;
 /// server then samples the signal ring at that rate (at most 60 Hz) and sends the rows recorded since the last frame
 /// as <c>{"t": [...], "v": [[...], ...], "seq": n, "serverMs": ...}</c> (values in subscription order). The page may
 /// send <c>{"ping": x}</c> and gets <c>{"pong": x, "serverMs": ...}</c> (latency measurement). Reading the ring takes no
-/// lock and never touches the loop.
+/// lock and never touches the loop. Each client's frames are serialized once, into a <see cref="FrameQueue"/> that
+/// drops the oldest when the client falls behind (a frame's <c>dropped</c> counts them); at most
+/// <c>maxStreams</c> clients stream at once (503 for more).
 /// </summary>
 internal static class StreamEndpoint
 {
     private const double MaxRateHz = 60;
     private const int MaxRowsPerFrame = 200;
 
-    public static void Map(IEndpointRouteBuilder app, IConsoleSession session)
+    public static void Map(IEndpointRouteBuilder app, IConsoleSession session, int maxStreams, int queueFrames)
     {
+        var streaming = 0;
         app.Map("/api/stream", async (HttpContext http) =>
         {
             if (!http.WebSockets.IsWebSocketRequest)
@@ -30,13 +33,28 @@ internal static class StreamEndpoint
                 return;
             }
 
-            using var socket = await http.WebSockets.AcceptWebSocketAsync().ConfigureAwait(false);
-            using var client = new Client(socket, session.Signals);
-            await client.Run(http.RequestAborted).ConfigureAwait(false);
+            if (Interlocked.Increment(ref streaming) > maxStreams)
+            {
+                Interlocked.Decrement(ref streaming);
+                http.Response.StatusCode = StatusCodes.Status503ServiceUnavailable;
+                await http.Response.WriteAsJsonAsync(new ApiError($"stream: {maxStreams} clients stream already (the most this console serves); close one"), ConsoleJson.Options).ConfigureAwait(false);
+                return;
+            }
+
+            try
+            {
+                using var socket = await http.WebSockets.AcceptWebSocketAsync().ConfigureAwait(false);
+                using var client = new Client(socket, session.Signals, new FrameQueue(queueFrames));
+                await client.Run(http.RequestAborted).ConfigureAwait(false);
+            }
+            finally
+            {
+                Interlocked.Decrement(ref streaming);
+            }
         });
     }
 
-    private sealed class Client(WebSocket socket, SignalRing ring) : IDisposable
+    private sealed class Client(WebSocket socket, SignalRing ring, FrameQueue queue) : IDisposable
     {
         private readonly SemaphoreSlim _send = new(1, 1);
         private volatile Subscription _subscription = new([], [], 1 / MaxRateHz, 0);
@@ -45,6 +63,7 @@ internal static class StreamEndpoint
         public async Task Run(CancellationToken aborted)
         {
             using var stop = CancellationTokenSource.CreateLinkedTokenSource(aborted);
+            var cutter = CutLoop(stop.Token);
             var sender = SendLoop(stop.Token);
             try
             {
@@ -55,7 +74,7 @@ internal static class StreamEndpoint
                 await stop.CancelAsync().ConfigureAwait(false);
                 try
                 {
-                    await sender.ConfigureAwait(false);
+                    await Task.WhenAll(cutter, sender).ConfigureAwait(false);
                 }
                 catch (OperationCanceledException)
                 {
@@ -119,7 +138,8 @@ internal static class StreamEndpoint
             }
         }
 
-        private async Task SendLoop(CancellationToken token)
+        /// <summary>Cuts a frame of the rows since the last one each period, into the queue (never waits for the client).</summary>
+        private async Task CutLoop(CancellationToken token)
         {
             while (!token.IsCancellationRequested && socket.State == WebSocketState.Open)
             {
@@ -134,14 +154,25 @@ internal static class StreamEndpoint
                 Interlocked.Exchange(ref _cursor, slice.Next);
                 if (slice.Times.Count > 0)
                 {
-                    await Send(new { T = slice.Times, V = slice.Values, Seq = slice.Next, Id = subscription.Id, ServerMs = DateTimeOffset.UtcNow.ToUnixTimeMilliseconds() }, token).ConfigureAwait(false);
+                    queue.Add(JsonSerializer.SerializeToUtf8Bytes(new { T = slice.Times, V = slice.Values, Seq = slice.Next, Id = subscription.Id, Dropped = queue.Dropped, ServerMs = DateTimeOffset.UtcNow.ToUnixTimeMilliseconds() }, ConsoleJson.Options));
                 }
             }
         }
 
-        private async Task Send(object message, CancellationToken token)
+        /// <summary>Sends the queued frames as fast as the client takes them.</summary>
+        private async Task SendLoop(CancellationToken token)
         {
-            var bytes = JsonSerializer.SerializeToUtf8Bytes(message, ConsoleJson.Options);
+            while (!token.IsCancellationRequested && socket.State == WebSocketState.Open)
+            {
+                var frame = await queue.NextAsync(token).ConfigureAwait(false);
+                await SendBytes(frame, token).ConfigureAwait(false);
+            }
+        }
+
+        private Task Send(object message, CancellationToken token) => SendBytes(JsonSerializer.SerializeToUtf8Bytes(message, ConsoleJson.Options), token);
+
+        private async Task SendBytes(byte[] bytes, CancellationToken token)
+        {
             await _send.WaitAsync(token).ConfigureAwait(false);
             try
             {

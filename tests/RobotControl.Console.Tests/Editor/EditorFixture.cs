@@ -34,7 +34,11 @@ public sealed class EditorFixture : IAsyncLifetime
         var repo = ConsoleFixture.RepoRoot;
         Directory.CreateDirectory(Graphs);
         Directory.CreateSymbolicLink(Path.Combine(Root, "hardware"), Path.Combine(repo, "hardware"));
-        Directory.CreateSymbolicLink(Path.Combine(Graphs, "trajectories"), Path.Combine(repo, "graphs", "trajectories"));
+        Directory.CreateDirectory(Path.Combine(Graphs, "trajectories")); // a copy: a link leaving the graphs folder is refused (ConfinedFiles)
+        foreach (var file in Directory.EnumerateFiles(Path.Combine(repo, "graphs", "trajectories")))
+        {
+            File.Copy(file, Path.Combine(Graphs, "trajectories", Path.GetFileName(file)));
+        }
         File.Copy(Path.Combine(repo, "graphs", "teleop-lb.json"), Path.Combine(Graphs, "teleop-lb.json"));
         File.Copy(Path.Combine(repo, "tests", "RobotControl.Console.Tests", "Editor", HandWritten), Path.Combine(Graphs, HandWritten));
 
@@ -60,12 +64,23 @@ public sealed class EditorFixture : IAsyncLifetime
         Directory.Delete(Root, recursive: true);
     }
 
+    /// <summary>An HTTP client holding the operator role (taken from whoever held it): saving and starting are the operator's.</summary>
+    public async Task<HttpClient> Operator(string client)
+    {
+        if (Server.Operator.Holder is { } holder)
+        {
+            Server.Operator.Release(holder);
+        }
+
+        var http = Client(client);
+        (await http.PostAsync("api/operator", null)).EnsureSuccessStatusCode();
+        return http;
+    }
+
     /// <summary>An HTTP client that names itself <paramref name="client"/>.</summary>
     public HttpClient Client(string client)
     {
-        var http = new HttpClient { BaseAddress = Server.BaseUrl };
-        http.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, client);
-        return http;
+        return ConsoleFixture.Client(Server, client);
     }
 }
 

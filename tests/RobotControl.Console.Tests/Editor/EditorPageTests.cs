@@ -65,6 +65,8 @@ public sealed class EditorPageTests(EditorFixture console)
         await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync(new() { Timeout = 15000 });
         Assert.True(await page.GetByTestId("start").IsEnabledAsync());
         Assert.Equal(3 + 1 + 1, await page.Locator(".connection.delayed").CountAsync()); // forces, force_enable, the clutch's follow
+        await page.Locator("#claim").ClickAsync(); // saving is the operator's
+        await page.Locator("#role[data-role=operator]").WaitForAsync();
         await page.GetByTestId("file-name").FillAsync("built-in-editor.json");
         await page.GetByTestId("save").ClickAsync();
         await page.Locator("#message.ok").Filter(new() { HasTextString = "saved built-in-editor.json" }).WaitForAsync();
@@ -203,7 +205,7 @@ public sealed class EditorPageTests(EditorFixture console)
     private async Task<IPage> Open(int width = 2560, int height = 1440)
     {
         var page = await console.Browser.NewPageAsync(new() { ViewportSize = new() { Width = width, Height = height } });
-        await page.GotoAsync(new Uri(console.Server.BaseUrl, "#editor").ToString());
+        await page.GotoAsync(ConsoleFixture.PageUrl(console.Server, "editor"));
         await page.Locator(".ged-type[data-type=clutch]").WaitForAsync();
         await page.Locator("[data-testid=problems][data-count]").WaitForAsync();
         return page;
@@ -211,7 +213,7 @@ public sealed class EditorPageTests(EditorFixture console)
 
     private static async Task Close(IPage page)
     {
-        await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client') } })");
+        await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client'), Authorization: 'Bearer ' + sessionStorage.getItem('rc-console-token') } })");
         await page.CloseAsync();
     }
 }

@@ -54,7 +54,7 @@ public sealed class GraphEndpointTests(EditorFixture console)
     [InlineData("escape.txt")]
     public async Task Saving_outside_the_graphs_folder_is_refused_with_one_line(string name)
     {
-        using var http = console.Client("save");
+        using var http = await console.Operator("save");
         var reply = await http.PutAsJsonAsync($"api/editor/graphs/{Uri.EscapeDataString(name)}", new { graph = JsonNode.Parse(File.ReadAllText(Path.Combine(console.Graphs, EditorFixture.HandWritten))) });
 
         Assert.Equal(HttpStatusCode.BadRequest, reply.StatusCode);
@@ -67,12 +67,11 @@ public sealed class GraphEndpointTests(EditorFixture console)
     [Fact]
     public async Task A_graph_with_problems_is_neither_saved_nor_started()
     {
-        using var http = console.Client("refused");
+        using var http = await console.Operator("refused");
         var reply = await http.PutAsJsonAsync("api/editor/graphs/broken.json", new { graph = JsonNode.Parse(BrokenGraph()) });
         Assert.Equal(HttpStatusCode.UnprocessableEntity, reply.StatusCode);
         Assert.False(File.Exists(Path.Combine(console.Graphs, "broken.json")));
 
-        (await http.PostAsync("api/operator", null)).EnsureSuccessStatusCode();
         var start = await http.PostAsJsonAsync("api/editor/start", new { name = "broken.json", graph = JsonNode.Parse(BrokenGraph()) });
         Assert.Equal(HttpStatusCode.UnprocessableEntity, start.StatusCode);
         var body = await start.Content.ReadFromJsonAsync<JsonElement>();
@@ -85,7 +84,7 @@ public sealed class GraphEndpointTests(EditorFixture console)
     {
         var graph = JsonNode.Parse(File.ReadAllText(Path.Combine(console.Graphs, EditorFixture.HandWritten)))!.AsObject();
         graph["layout"] = new JsonObject { ["clutch_right"] = new JsonObject { ["x"] = 420.4, ["y"] = 80 }, ["robot"] = new JsonObject { ["x"] = 900, ["y"] = 40 } };
-        using var http = console.Client("save-ok");
+        using var http = await console.Operator("save-ok");
 
         var reply = await http.PutAsJsonAsync("api/editor/graphs/saved-by-api.json", new { graph });
         reply.EnsureSuccessStatusCode();

@@ -17,11 +17,9 @@ public sealed class EmergencyStopTests
     {
         using var session = Open();
         await using var server = await ConsoleServer.StartAsync(session, BindAddress.Parse("127.0.0.1:0"), null);
-        using var operatorClient = new HttpClient { BaseAddress = server.BaseUrl };
-        operatorClient.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, "operator-a");
+        using var operatorClient = ConsoleFixture.Client(server, "operator-a");
         (await operatorClient.PostAsync("api/operator", null)).EnsureSuccessStatusCode();
-        using var watcher = new HttpClient { BaseAddress = server.BaseUrl };
-        watcher.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, "watcher-b");
+        using var watcher = ConsoleFixture.Client(server, "watcher-b");
         Assert.Equal(HttpStatusCode.Forbidden, (await watcher.PostAsJsonAsync("api/pedal", new { down = true })).StatusCode); // an action: operator only
 
         var response = await watcher.PostAsync("api/estop", null);

@@ -92,8 +92,7 @@ public sealed class SurgeonFixture : IAsyncLifetime
             Server.Operator.Release(holder);
         }
 
-        var http = new HttpClient { BaseAddress = Server.BaseUrl };
-        http.DefaultRequestHeaders.Add(OperatorRole.ClientHeader, client);
+        var http = ConsoleFixture.Client(Server, client);
         if (operate)
         {
             (await http.PostAsync("api/operator", null)).EnsureSuccessStatusCode();

@@ -188,7 +188,7 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
 
         var context = await console.Browser.NewContextAsync(new() { ViewportSize = new() { Width = 1920, Height = 1080 } });
         var page = await context.NewPageAsync();
-        await page.GotoAsync(new Uri(server.BaseUrl, "#surgeon").ToString());
+        await page.GotoAsync(ConsoleFixture.PageUrl(server, "surgeon"));
         if (operate)
         {
             await page.Locator("#claim").ClickAsync();

@@ -173,7 +173,7 @@ public sealed class PageTests(ConsoleFixture console)
         console.ReleaseOperator();
         var context = await console.Browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 900 } });
         var page = await context.NewPageAsync();
-        await page.GotoAsync(new Uri(console.Server.BaseUrl, $"#{hash}").ToString());
+        await page.GotoAsync(ConsoleFixture.PageUrl(console.Server, hash));
         if (operate)
         {
             await page.Locator("#claim").ClickAsync();

@@ -15,7 +15,7 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.Cli.Commands.WebConsole;
 
 /// <summary>
-/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--open [--page surgeon] [--kiosk]] [--inject silent=...] [--report session.json] [--rt-priority 80] [--cpu N]</c>:
+/// <c>robotctl console &lt;graph&gt; [--virtual | --transport &lt;uri&gt;] [--bind 127.0.0.1:5080] [--token T] [--allowed-host name]... [--https-cert file [--https-key file]] [--open [--page surgeon] [--kiosk]] [--inject silent=...] [--report session.json] [--rt-priority 80] [--cpu N]</c>:
 /// starts the session and serves the web console (pages and JSON/WebSocket API) from this process until Ctrl+C or
 /// SIGTERM. The stop switches the motors off, reads every module back, prints what they said and writes the session's
 /// report (<c>--report</c>); the exit code is 0 when every module answered with torque off, 1 otherwise.
@@ -28,8 +28,11 @@ internal sealed class ConsoleCommand : ICliCommand
         var graph = new Argument<FileInfo>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json" };
         var isVirtual = new Option<bool>("--virtual") { Description = "Run the virtual robot (real firmware, simulated motors) in real time" };
         var transport = new Option<string?>("--transport") { Description = "Bus transport instead of the graph's: serial:/dev/ttyUSB0?baud=1000000 | usb:0403:6001 | tcp:host:port" };
-        var bind = new Option<string>("--bind") { Description = "Address and port to serve on; anything but loopback needs a token", DefaultValueFactory = _ => "127.0.0.1:5080" };
-        var token = new Option<string?>("--token") { Description = "Access token (generated and printed when a non-loopback bind has none)" };
+        var bind = new Option<string>("--bind") { Description = "Address and port to serve on (off this host: give --https-cert)", DefaultValueFactory = _ => "127.0.0.1:5080" };
+        var token = new Option<string?>("--token") { Description = "The session's access token, 8 characters or more (default: a random one, printed in the URL)" };
+        var allowedHosts = new Option<string[]>("--allowed-host") { Description = "A host name the console answers to besides localhost, the bind address and this machine's (repeatable)", AllowMultipleArgumentsPerToken = false };
+        var httpsCert = new Option<FileInfo?>("--https-cert") { Description = "Serve HTTPS with this certificate: .pfx/.p12 (no password) or PEM (key in it or in --https-key)" };
+        var httpsKey = new Option<FileInfo?>("--https-key") { Description = "The PEM private key of --https-cert" };
         var open = new Option<bool>("--open") { Description = "Open the console in a browser window (Chromium's --app mode) when one is installed" };
         var plugins = new Option<DirectoryInfo?>("--plugins") { Description = "Also load plug-in assemblies from this folder" };
         var seed = CliOption.Number("--seed", "Seed of the virtual robot's noise and wire faults", 0, int.MaxValue, 1);
@@ -41,7 +44,7 @@ internal sealed class ConsoleCommand : ICliCommand
         var report = CliOption.OutputFile("--report", "At the stop, write the session's report (JSON: last status, the stop's read-back, events, timings) to this file (checked before the session starts)");
         var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status, graph editor and the surgeon's view of a running session.");
         command.Arguments.Add(graph);
-        foreach (var o in new Option[] { isVirtual, transport, bind, token, open, plugins, seed, inject, page, kiosk, report, rtPriority, cpu })
+        foreach (var o in new Option[] { isVirtual, transport, bind, token, allowedHosts, httpsCert, httpsKey, open, plugins, seed, inject, page, kiosk, report, rtPriority, cpu })
         {
             command.Options.Add(o);
         }
@@ -50,8 +53,7 @@ internal sealed class ConsoleCommand : ICliCommand
             parse.GetValue(graph)!.FullName,
             parse.GetValue(isVirtual),
             parse.GetValue(transport),
-            parse.GetValue(bind)!,
-            parse.GetValue(token),
+            new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName),
             parse.GetValue(open),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
@@ -61,7 +63,7 @@ internal sealed class ConsoleCommand : ICliCommand
         return command;
     }
 
-    private static int Run(string graphPath, bool isVirtual, string? transport, string bindText, string? token, bool open, string? pluginsFolder, int seed, ConsoleExtras extras, TextWriter output, TextWriter error)
+    private static int Run(string graphPath, bool isVirtual, string? transport, ConsoleAccess access, bool open, string? pluginsFolder, int seed, ConsoleExtras extras, TextWriter output, TextWriter error)
     {
         if (isVirtual && transport is not null)
         {
@@ -69,10 +71,10 @@ internal sealed class ConsoleCommand : ICliCommand
             return 2;
         }
 
-        BindAddress bind;
+        ConsoleServerOptions serving;
         try
         {
-            bind = BindAddress.Parse(bindText);
+            serving = access.Options();
         }
         catch (FormatException ex)
         {
@@ -114,20 +116,20 @@ internal sealed class ConsoleCommand : ICliCommand
             ConsoleServer server;
             try
             {
-                server = ConsoleServer.StartAsync(switchable, bind, token, editor: editor).GetAwaiter().GetResult();
+                server = ConsoleServer.StartAsync(switchable, serving with { Editor = editor }).GetAwaiter().GetResult();
             }
             catch (Exception ex) when (ex is IOException or FormatException)
             {
-                error.WriteLine($"console: cannot serve on {bind}: {ex.Message}");
+                error.WriteLine($"console: cannot serve on {serving.Bind}: {ex.Message}");
                 return 2;
             }
 
             var status = switchable.Status;
             output.WriteLine($"console: {status.Robot} on {status.Transport}, {status.ModulesFound} of {status.ModulesConfigured} modules found, loop {status.LoopRateHz:0} Hz");
             output.WriteLine($"console: {server.OpenUrl}");
-            if (server.Token is not null && token is null)
+            if (ConsoleAccess.Warning(serving) is { } warning)
             {
-                output.WriteLine($"console: access token {server.Token} (generated: the bind is not loopback)");
+                error.WriteLine(warning);
             }
 
             if (open)

@@ -7,6 +7,21 @@ export const clientId: string = sessionStorage.getItem(clientKey) ?? (() => {
   return id;
 })();
 
+// The session's access token: the console prints its URL with ?token=...; the page keeps it in this tab's
+// sessionStorage, takes it out of the address bar (and so out of history and bookmarks) and sends it with every API
+// call (Authorization: Bearer) and WebSocket (?token=). Without it the API answers 401; E-STOP still works.
+const tokenKey = 'rc-console-token';
+export const token: string | null = (() => {
+  const url = new URL(location.href);
+  const given = url.searchParams.get('token');
+  if (given) {
+    sessionStorage.setItem(tokenKey, given);
+    url.searchParams.delete('token');
+    history.replaceState(history.state, '', `${url.pathname}${url.search}${url.hash}`);
+  }
+  return sessionStorage.getItem(tokenKey);
+})();
+
 export class ApiError extends Error {
   constructor(readonly status: number, message: string, readonly details: string[] = []) {
     super(message);
@@ -16,7 +31,7 @@ export class ApiError extends Error {
 export async function api<T>(method: string, path: string, body?: unknown): Promise<T> {
   const response = await fetch(`/api${path}`, {
     method,
-    headers: { 'X-Console-Client': clientId, ...(body === undefined ? {} : { 'Content-Type': 'application/json' }) },
+    headers: { 'X-Console-Client': clientId, ...(token ? { Authorization: `Bearer ${token}` } : {}), ...(body === undefined ? {} : { 'Content-Type': 'application/json' }) },
     body: body === undefined ? undefined : JSON.stringify(body),
   });
   const text = await response.text();

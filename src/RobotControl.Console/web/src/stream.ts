@@ -1,5 +1,6 @@
 // One WebSocket to /api/stream: subscribe to signals, receive the rows recorded since the last frame.
-export interface Frame { t: number[]; v: number[][]; seq: number; id: number; serverMs: number }
+import { token } from './api';
+export interface Frame { t: number[]; v: number[][]; seq: number; id: number; dropped: number; serverMs: number }
 
 export class SignalStream {
   private socket: WebSocket | null = null;
@@ -34,7 +35,7 @@ export class SignalStream {
   }
 
   private open(): void {
-    const url = `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/api/stream`;
+    const url = `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/api/stream?token=${encodeURIComponent(token ?? '')}`;
     const socket = new WebSocket(url);
     this.socket = socket;
     socket.onopen = () => this.send(socket);

@@ -1,4 +1,6 @@
 using System.Diagnostics;
+using System.Net;
+using System.Net.Http.Headers;
 using System.Net.Http.Json;
 using System.Text.Json;
 using System.Text.RegularExpressions;
@@ -19,7 +21,10 @@ public sealed partial class ConsoleBusErrorTests
         var sim = new SimulatorProcess(RunProcess.Patience);
         using var console = new RunProcess("console", RunProcess.Graph, "--transport", sim.Transport, "--bind", "127.0.0.1:0");
         var output = console.WaitFor("Ctrl+C stops", RunProcess.Patience);
-        using var http = new HttpClient { BaseAddress = new Uri(Url().Match(output).Groups[1].Value) };
+        var url = Url().Match(output);
+        using var http = new HttpClient { BaseAddress = new Uri(url.Groups[1].Value) };
+        Assert.Equal(HttpStatusCode.Unauthorized, (await http.GetAsync("api/status")).StatusCode); // the printed URL carries the session's token; nothing works without it
+        http.DefaultRequestHeaders.Authorization = new AuthenticationHeaderValue("Bearer", url.Groups[2].Value);
         http.DefaultRequestHeaders.Add("X-Console-Client", "bus-error-test");
         (await http.PostAsync("api/operator", null)).EnsureSuccessStatusCode();
         var on = await http.PostAsJsonAsync("api/torque", new { on = true }); // on a real bus the session starts at INIT, motors off
@@ -49,6 +54,6 @@ public sealed partial class ConsoleBusErrorTests
         Assert.True(console.Output.Contains("torque NOT confirmed off", StringComparison.Ordinal), console.Output);
     }
 
-    [GeneratedRegex(@"console: (http://127\.0\.0\.1:\d+/)")]
+    [GeneratedRegex(@"console: (http://127\.0\.0\.1:\d+/)\?token=([0-9a-f]{32})")]
     private static partial Regex Url();
 }

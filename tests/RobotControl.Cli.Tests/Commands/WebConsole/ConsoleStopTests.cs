@@ -17,6 +17,7 @@ public sealed class ConsoleStopTests
         using (var console = new RunProcess("console", RunProcess.Graph, "--virtual", "--bind", "127.0.0.1:0", "--report", report))
         {
             console.WaitFor("Ctrl+C stops", RunProcess.Patience);
+            Assert.Matches(@"console: http://127\.0\.0\.1:\d+/\?token=[0-9a-f]{32}\n", console.Output); // the URL to open carries the session's token, on loopback too
             Thread.Sleep(500); // the session runs a while
             console.Signal("INT");
             Assert.Equal(0, console.WaitForExit(RunProcess.Patience));
