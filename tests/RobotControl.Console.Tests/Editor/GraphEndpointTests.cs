@@ -129,7 +129,7 @@ public sealed class GraphEndpointTests(EditorFixture console)
         Assert.Equal("stopped", console.Session.Status.Session);
         Assert.False(console.Session.Status.TorqueOn);
         Assert.Equal("stopped: torque off on all 6 modules (read back)", console.Session.EventsAfter(0)[^1].Message); // the stop's read-back, for the pages
-        var end = console.Session.Close(); // the stopped graph's end, as robotctl console reports it
+        var end = console.Session.Current.Close(); // the stopped graph's end, as robotctl console reports it (closing the console itself would end the shared fixture)
         Assert.True(end.TorqueOff);
         Assert.Equal(6, end.Stop!.Modules);
         using var http = console.Client("stopped");
