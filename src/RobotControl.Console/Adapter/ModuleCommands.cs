@@ -58,11 +58,7 @@ internal sealed class ModuleCommands(BusRobot bus, CommandQueue queue, SessionEv
             return checks.ControllerNotFound(controllerId);
         }
 
-        return queue.Submit(() =>
-        {
-            parameters.Read(c);
-            return CommandResult.Ok($"module {c.Id}: parameters read");
-        });
+        return parameters.ReadAsync(c); // one parameter per gap between cycles
     }
 
     /// <inheritdoc cref="IConsoleSession.RebootAsync"/>

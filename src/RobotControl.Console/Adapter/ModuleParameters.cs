@@ -47,23 +47,33 @@ internal sealed class ModuleParameters(BusRobot bus, CommandQueue commands, Sess
             return;
         }
 
-        _reading = commands.Submit(() =>
-        {
-            Read(c);
-            return CommandResult.Ok($"module {c.Id}: parameters read");
-        }).ContinueWith(t => Done(c, t.Result), TaskScheduler.Default);
+        _reading = ReadAsync(c).ContinueWith(t => Done(c, t.Result), TaskScheduler.Default);
     }
 
-    /// <summary>Reads a module's parameters (the bus's owner).</summary>
-    public void Read(RobotController c)
+    /// <summary>
+    /// Reads a module's parameters between bus cycles, one parameter of one motor per piece of work: a gap between two
+    /// cycles carries one transaction (and its retries) at most, however many reads are asked for at once, so the
+    /// cycle and a loop sharing its thread (the virtual robot's schedule) keep their time. The first failure ends it.
+    /// </summary>
+    public async Task<CommandResult> ReadAsync(RobotController c)
     {
         foreach (var m in c.Motors)
         {
             foreach (var p in MotorParameter.All)
             {
-                _values[(c.Id, m.Config.Channel, p.Key)] = p.FromCounts(m.Config, bus.ReadParameter(c.Id, p.Field.Name, m.Config.Channel));
+                var read = await commands.Submit(() =>
+                {
+                    _values[(c.Id, m.Config.Channel, p.Key)] = p.FromCounts(m.Config, bus.ReadParameter(c.Id, p.Field.Name, m.Config.Channel));
+                    return CommandResult.Ok(string.Empty);
+                }).ConfigureAwait(false);
+                if (!read.Succeeded)
+                {
+                    return read;
+                }
             }
         }
+
+        return CommandResult.Ok($"module {c.Id}: parameters read");
     }
 
     /// <summary>Keeps a value written and read back (the bus's owner).</summary>

@@ -31,4 +31,24 @@ public sealed class ParameterReadTests
         Assert.Empty(stop.TorqueOn); // every module that answers has its motors off
         Assert.Equal(["13 \"left forearm\""], stop.Unreachable); // the silent one cannot answer the read-back
     }
+
+    [Fact]
+    public async Task Ten_reloads_at_once_are_read_one_parameter_per_gap_and_the_loop_sharing_the_bus_thread_keeps_its_time()
+    {
+        using var session = ConsoleFixture.VirtualSession();
+        var waited = Stopwatch.StartNew();
+        while (session.Status.Session != "running" && waited.Elapsed < TimeSpan.FromSeconds(60))
+        {
+            await Task.Delay(20);
+        }
+
+        Assert.True((await session.PedalAsync(true)).Succeeded); // teleoperation drives the arms: the loop is timed at 10 ms
+        var reloads = await Task.WhenAll(Enumerable.Range(0, 10).Select(_ => session.ReloadParametersAsync(1)));
+
+        Assert.All(reloads, r => Assert.True(r.Succeeded, r.Message));
+        var messages = session.EventsAfter(0).Select(e => e.Message).ToList();
+        Assert.DoesNotContain(messages, m => m.Contains("deadline_miss", StringComparison.Ordinal) || m.Contains("host_stall", StringComparison.Ordinal));
+        Assert.Contains(messages, m => m.Contains("PEDAL_DOWN", StringComparison.Ordinal));
+        Assert.DoesNotContain(messages, m => m.Contains("-> PEDAL_UP", StringComparison.Ordinal) && m.Contains("loop", StringComparison.Ordinal));
+    }
 }
