@@ -110,7 +110,7 @@ internal static class ModuleSectionReader
                 {
                     sink.Add(mm.FieldPath("current_limit_A"), $"is {current}; must be below the module's current_sense_full_scale_A ({fullScale})");
                 }
-                else if (double.IsFinite(current) && double.IsFinite(fullScale) && fullScale > 0 && Math.Round(current * ModuleDefinition.RawPerAmpOf(fullScale)) < 1)
+                else if (!sink.HasProblemAt(mm.FieldPath("current_limit_A")) && !sink.HasProblemAt(m.FieldPath("current_sense_full_scale_A")) && double.IsFinite(current) && double.IsFinite(fullScale) && fullScale > 0 && Math.Round(current * ModuleDefinition.RawPerAmpOf(fullScale)) < 1)
                 {
                     // The module keeps the limit in ADC counts, and a limit of 0 counts switches its current limiter off.
                     var least = 0.5 / ModuleDefinition.RawPerAmpOf(fullScale);

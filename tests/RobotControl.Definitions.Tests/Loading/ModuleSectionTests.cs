@@ -42,6 +42,21 @@ public sealed class ModuleSectionTests
     }
 
     [Fact]
+    public void A_current_limit_of_0_is_refused_in_one_line_naming_file_and_path()
+    {
+        var json = RobotFiles.Json("lb-1.0.json");
+        json["modules"]!["layout"]![0]!["motors"]![1]!["current_limit_A"] = 0;
+        var file = RobotFiles.Shipped("zero-limit.json");
+
+        var ex = Assert.Throws<RobotDataException>(() => RobotLoader.LoadFromText(json.ToJsonString(), file));
+
+        var error = Assert.Single(ex.Errors);
+        Assert.Equal("$.modules.layout[0].motors[1].current_limit_A", error.Path);
+        Assert.StartsWith("is 0; must be at least 0.001", error.Message, StringComparison.Ordinal);
+        Assert.Equal($"{file}: {error.Path}: {error.Message}", ex.Message);
+    }
+
+    [Fact]
     public void Errors_name_the_field_by_its_JSON_path()
     {
         var json = RobotFiles.Json("lb-1.0.json");
