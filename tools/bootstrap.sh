@@ -16,8 +16,8 @@ command -v cmake >/dev/null 2>&1 || need+=(cmake)
 # check_urdf validates the URDF that `robotctl urdf` writes (tests/RobotControl.Kinematics.Tests/Urdf).
 command -v check_urdf >/dev/null 2>&1 || need+=(liburdfdom-tools)
 # The web console's page tests run in Debian's headless Chromium (tests/RobotControl.Console.Tests); nothing downloads
-# a browser. Node/npm build the console's front-end (src/RobotControl.Console/web: npm install of the versions package-lock.json
-# pins, run by the .NET build; docs/dependencies.md says why not npm ci).
+# a browser. Node/npm build the console's front-end (src/RobotControl.Console/web: npm ci of the versions package-lock.json
+# pins, run by the .NET build; docs/dependencies.md).
 [ -x /usr/bin/chromium ] || need+=(chromium)
 command -v npm >/dev/null 2>&1 || need+=(nodejs npm)
 # Python runs the graph and trajectory generators, the firmware's mutation list, and wraps the CLI's Ctrl+C tests.

@@ -63,12 +63,26 @@ static void read_write(void)
     CHECK_EQ(st[0].data[0], rcfw_ct_fields[RCFW_CT_FIELD_FIRMWARE_VERSION].def);
     CHECK_EQ(st[0].data[1], 1); /* id */
     CHECK_EQ(st[0].data[2], 3); /* baud code */
-    /* a read over unmapped bytes (3..5) is an access error, with no data */
+    /* a read over unmapped bytes (3..5) is an access error, with the requested length of zero bytes (as a
+     * ROBOTIS device answers: a master reading the data without looking at the error finds its length) */
     uint8_t gap[4] = {0, 0, 10, 0};
     send_frame(bus, 1, RCFW_INST_READ, gap, 4);
     CHECK_EQ(collect(bus, 2000, st, 2), 1);
     CHECK_EQ(st[0].error, RCFW_ERR_ACCESS);
+    CHECK_EQ(st[0].len, 10);
+    for (int i = 0; i < 10; i++) {
+        CHECK_EQ(st[0].data[i], 0);
+    }
+    /* longer than the whole table: no reply could carry it, the error alone */
+    uint8_t huge[4] = {0, 0, 0x49, 0x01}; /* 329 bytes */
+    send_frame(bus, 1, RCFW_INST_READ, huge, 4);
+    CHECK_EQ(collect(bus, 2000, st, 2), 1);
+    CHECK_EQ(st[0].error, RCFW_ERR_ACCESS);
     CHECK_EQ(st[0].len, 0);
+    /* ACTION with nothing registered: instruction error (the e-Manual's error table) */
+    send_frame(bus, 1, RCFW_INST_ACTION, 0, 0);
+    CHECK_EQ(collect(bus, 2000, st, 2), 1);
+    CHECK_EQ(st[0].error, RCFW_ERR_INSTRUCTION);
     /* write and read back a persistent value */
     uint16_t kp = 777;
     CHECK_EQ(write_ack(bus, 1, RCFW_CT_KP + 2 * RCFW_CT_KP_STRIDE, &kp, 2), 0);

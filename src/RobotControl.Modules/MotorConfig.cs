@@ -24,7 +24,7 @@ public sealed class MotorConfig
         Name = MotorName.Of(Actuator, robot.Joints);
         GearRatio = Actuator.Drivetrain.TotalRatio;
         CountsPerRad = motor.HallCountsPerRev * GearRatio / (2 * Math.PI);
-        RawPerAmp = 4095.0 / module.CurrentSenseFullScaleA;
+        RawPerAmp = module.RawPerAmp;
         (OutputMinRad, OutputMaxRad) = OutputRange(robot, Actuator);
     }
 

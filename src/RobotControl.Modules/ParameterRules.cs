@@ -8,11 +8,18 @@ namespace RobotControl.Modules;
 /// each value against its control-table field (writable, within the field's range and type, no cast that truncates),
 /// and the rules that tie fields together per motor (position_min below position_max; a pot calibration of 0 or 2..8
 /// points, strictly monotonic, with a non-zero step), checked on the module's table as it would be after the write.
+/// A value that switches a protection off (0 in a field the control table marks <c>zero_disables</c>: the current
+/// limit, the speed limit, the bus watchdog) is not an ordinary value: it is refused unless the caller says, on
+/// purpose, that a protection may go off (<see cref="ProtectionOff"/>; the console never does, <c>robotctl params set
+/// --allow-protection-off</c> does).
 /// </summary>
 public static class ParameterRules
 {
-    /// <summary>Why <paramref name="value"/> cannot be stored in <paramref name="field"/>, or null when it can.</summary>
-    public static string? CheckValue(ControlTableField field, long value)
+    /// <summary>
+    /// Why <paramref name="value"/> cannot be stored in <paramref name="field"/>, or null when it can. A value that
+    /// switches a protection off is refused unless <paramref name="allowProtectionOff"/>.
+    /// </summary>
+    public static string? CheckValue(ControlTableField field, long value, bool allowProtectionOff = false)
     {
         ArgumentNullException.ThrowIfNull(field);
         if (!field.Writable)
@@ -21,9 +28,24 @@ public static class ParameterRules
         }
 
         var (min, max) = Range(field);
-        return value < min || value > max
-            ? string.Create(CultureInfo.InvariantCulture, $"{field.Name} = {value} is outside its range {min}..{max} ({field.Type}{(field.Unit.Length > 0 ? ", " + field.Unit : string.Empty)})")
+        if (value < min || value > max)
+        {
+            return string.Create(CultureInfo.InvariantCulture, $"{field.Name} = {value} is outside its range {min}..{max} ({field.Type}{(field.Unit.Length > 0 ? ", " + field.Unit : string.Empty)})");
+        }
+
+        return !allowProtectionOff && ProtectionOff(field, value) is { } off
+            ? $"{off}; a protection goes off only on purpose (robotctl params set --allow-protection-off)"
             : null;
+    }
+
+    /// <summary>
+    /// What <paramref name="value"/> in <paramref name="field"/> switches off (e.g. "current_limit = 0 switches the
+    /// motor's current limit off"), or null when it switches nothing off.
+    /// </summary>
+    public static string? ProtectionOff(ControlTableField field, long value)
+    {
+        ArgumentNullException.ThrowIfNull(field);
+        return value == 0 && field.ZeroDisables is { } protection ? $"{field.Name} = 0 switches {protection} off" : null;
     }
 
     /// <summary>The values <paramref name="field"/> accepts: its own range within what its type holds.</summary>

@@ -28,9 +28,12 @@ public sealed class ParameterWriter
         _table = table;
     }
 
-    /// <summary>The checks that need no module: the field is writable, has motor <paramref name="motor"/>, and accepts <paramref name="value"/>.</summary>
+    /// <summary>
+    /// The checks that need no module: the field is writable, has motor <paramref name="motor"/>, and accepts
+    /// <paramref name="value"/> (a value that switches a protection off only with <paramref name="allowProtectionOff"/>).
+    /// </summary>
     /// <exception cref="ArgumentException">Why not, naming the field; nothing was written.</exception>
-    public static void CheckValue(ControlTableField field, int motor, long value)
+    public static void CheckValue(ControlTableField field, int motor, long value, bool allowProtectionOff = false)
     {
         ArgumentNullException.ThrowIfNull(field);
         if (motor < 0 || motor >= field.Count)
@@ -38,7 +41,7 @@ public sealed class ParameterWriter
             throw Refused(field.Count == 1 ? $"{field.Name} is one value per module, motor {motor} given" : $"{field.Name} has motors 0..{field.Count - 1}, motor {motor} given");
         }
 
-        if (ParameterRules.CheckValue(field, value) is { } problem)
+        if (ParameterRules.CheckValue(field, value, allowProtectionOff) is { } problem)
         {
             throw Refused(problem);
         }
@@ -51,10 +54,10 @@ public sealed class ParameterWriter
     /// </summary>
     /// <exception cref="ArgumentException">A check fails; nothing was written.</exception>
     /// <exception cref="IOException">The module's table cannot be read; nothing was written.</exception>
-    public void Check(byte id, string field, int motor, long value)
+    public void Check(byte id, string field, int motor, long value, bool allowProtectionOff = false)
     {
         var f = Field(field);
-        CheckValue(f, motor, value);
+        CheckValue(f, motor, value, allowProtectionOff);
         if (f.Persistent && f.Count > 1)
         {
             var block = new PersistentBlock(ReadPersistent(id), _table, new() { [(f.Name, motor)] = value });
@@ -66,12 +69,15 @@ public sealed class ParameterWriter
         }
     }
 
-    /// <summary>Checks (<see cref="Check"/>), writes and reads back one value; returns the value read back.</summary>
+    /// <summary>
+    /// Checks (<see cref="Check"/>), writes and reads back one value; returns the value read back. A value that
+    /// switches a protection off is written only with <paramref name="allowProtectionOff"/>.
+    /// </summary>
     /// <exception cref="ArgumentException">A check fails; nothing was written.</exception>
     /// <exception cref="IOException">The module refused the value, did not answer, or read back something else.</exception>
-    public long Write(byte id, string field, int motor, long value)
+    public long Write(byte id, string field, int motor, long value, bool allowProtectionOff = false)
     {
-        Check(id, field, motor, value);
+        Check(id, field, motor, value, allowProtectionOff);
         var f = _table[field];
         Put(id, f, motor, value);
         var back = Read(id, field, motor);

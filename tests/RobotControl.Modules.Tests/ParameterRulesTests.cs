@@ -23,6 +23,38 @@ public sealed class ParameterRulesTests
     public void A_value_inside_the_field_is_accepted(string field, long value) =>
         Assert.Null(ParameterRules.CheckValue(Table[field], value));
 
+    [Theory]
+    [InlineData("current_limit", "current_limit = 0 switches the motor's current limit off")]
+    [InlineData("speed_limit", "speed_limit = 0 switches the motor's setpoint speed limit off")]
+    [InlineData("bus_watchdog", "bus_watchdog = 0 switches the module's bus watchdog (both stages) off")]
+    public void Zero_in_a_protection_field_is_refused_unless_allowed_and_says_what_goes_off(string field, string off)
+    {
+        Assert.Equal(off, ParameterRules.ProtectionOff(Table[field], 0));
+        Assert.Equal($"{off}; a protection goes off only on purpose (robotctl params set --allow-protection-off)", ParameterRules.CheckValue(Table[field], 0));
+        Assert.Null(ParameterRules.CheckValue(Table[field], 0, allowProtectionOff: true));
+        Assert.Null(ParameterRules.ProtectionOff(Table[field], 1));
+        Assert.Null(ParameterRules.CheckValue(Table[field], 1));
+    }
+
+    [Fact]
+    public void Allowing_a_protection_off_does_not_let_a_value_outside_the_range_through() =>
+        Assert.StartsWith("current_limit = 4096 is outside its range", ParameterRules.CheckValue(Table["current_limit"], 4096, allowProtectionOff: true), StringComparison.Ordinal);
+
+    /// <summary>
+    /// The protections are the control table's: every field whose description says that 0 switches it off (disables,
+    /// "= off", "= unlimited") is marked <c>zero_disables</c>, and no other, so a new such field cannot be forgotten.
+    /// </summary>
+    [Fact]
+    public void Every_field_whose_zero_switches_something_off_is_marked_in_the_control_table()
+    {
+        string[] phrases = ["0 disables", "0 = off", "0 = unlimited"];
+        var described = Table.Fields.Where(f => phrases.Any(p => f.Description.Contains(p, StringComparison.Ordinal))).Select(f => f.Name).Order();
+        var marked = Table.Fields.Where(f => f.ZeroDisables is not null).Select(f => f.Name).Order();
+
+        Assert.Equal(["bus_watchdog", "current_limit", "speed_limit"], marked);
+        Assert.Equal(described, marked);
+    }
+
     [Fact]
     public void Cross_field_rules_hold_per_motor_and_only_for_the_changed_field()
     {

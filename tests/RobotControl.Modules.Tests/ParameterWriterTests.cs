@@ -32,6 +32,9 @@ public sealed class ParameterWriterTests : IDisposable
     [InlineData("pot_cal_raw3", 0, 0, "module 1: motor 0: pot calibration points pot_cal_raw0..")]
     [InlineData("model_number", 0, 1, "model_number is read-only; nothing was written")]
     [InlineData("no_such_field", 0, 1, "the control table has no field 'no_such_field'; nothing was written")]
+    [InlineData("current_limit", 1, 0, "current_limit = 0 switches the motor's current limit off; a protection goes off only on purpose (robotctl params set --allow-protection-off); nothing was written")]
+    [InlineData("speed_limit", 0, 0, "speed_limit = 0 switches the motor's setpoint speed limit off; a protection goes off only on purpose")]
+    [InlineData("bus_watchdog", 0, 0, "bus_watchdog = 0 switches the module's bus watchdog (both stages) off; a protection goes off only on purpose")]
     public void A_value_the_rules_refuse_never_reaches_the_bus(string field, int motor, long value, string expected)
     {
         var before = Table.Contains(field) && motor < Table[field].Count ? _writer.Read(1, field, motor) : 0;
@@ -44,6 +47,17 @@ public sealed class ParameterWriterTests : IDisposable
         {
             Assert.Equal(before, _writer.Read(1, field, motor));
         }
+    }
+
+    [Fact]
+    public void A_current_limit_of_zero_is_written_only_when_the_caller_allows_a_protection_off()
+    {
+        Assert.NotEqual(0, _writer.Read(1, "current_limit", 1));
+
+        Assert.Equal(0, _writer.Write(1, "current_limit", 1, 0, allowProtectionOff: true));
+
+        Assert.Equal(0, _writer.Read(1, "current_limit", 1));
+        Assert.NotEmpty(_link.Writes);
     }
 
     [Fact]

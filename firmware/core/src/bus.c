@@ -21,8 +21,10 @@ static uint16_t build_status(rcfw_module *m, uint8_t err, const uint8_t *data, u
     }
     m->body[0] = RCFW_INST_STATUS;
     m->body[1] = err;
-    if (len) {
+    if (len && data) {
         memcpy(&m->body[2], data, len);
+    } else if (len) {
+        memset(&m->body[2], 0, len);
     }
     uint16_t n = rcfw_frame_build(m->tx, sizeof m->tx, m->ct[RCFW_CT_ID], m->body, (uint16_t)(len + 2u));
     RCFW_ASSERT(n != 0u);
@@ -39,13 +41,15 @@ static void reply(rcfw_module *m, uint8_t err, const uint8_t *data, uint16_t len
     send_tx(m, build_status(m, err, data, len), extra_delay_us);
 }
 
-/* Status of a read (error and no data if refused). */
+/* Status of a read. A refused one carries its error and the requested length of zero bytes, as a ROBOTIS
+ * device does (a master that takes the data without looking at the error finds the length it asked for);
+ * only a length longer than the whole table, which no reply could carry, gets the error alone. */
 static uint16_t build_read_status(rcfw_module *m, uint16_t a, uint16_t n)
 {
     uint8_t e = rcfwi_check_read(m, a, n);
     if (e != 0u) {
         m->stats.bad_requests++;
-        return build_status(m, e, 0, 0);
+        return build_status(m, e, 0, n <= RCFW_CT_SIZE ? n : 0u);
     }
     rcfw_module_publish(m);
     return build_status(m, 0, &m->ct[a], n);
@@ -142,7 +146,9 @@ static uint8_t reg_write(rcfw_module *m, const uint8_t *pa, uint16_t pl)
 static uint8_t action(rcfw_module *m, uint16_t pl)
 {
     RCFW_VERIFY(pl == 0u, m->stats.bad_requests, RCFW_ERR_DATA_LENGTH);
-    RCFW_VERIFY(m->reg_len != 0u, m->stats.bad_requests, RCFW_ERR_RESULT_FAIL); /* nothing registered */
+    /* nothing registered: an instruction error, as the ROBOTIS e-Manual's error table says of an ACTION
+     * without a REG WRITE */
+    RCFW_VERIFY(m->reg_len != 0u, m->stats.bad_requests, RCFW_ERR_INSTRUCTION);
     uint16_t n = m->reg_len;
     m->reg_len = 0;
     return rcfwi_write(m, m->reg_addr, m->reg_data, n);

@@ -5,7 +5,11 @@
  * part as soon as the previous part has ended (plus its return delay), having counted the packet's bytes on the
  * bus. The CRC of part k covers every byte of the packet from the first FF to the end of part k's data, so the
  * last part's CRC is the CRC of the whole packet. The parts are not byte-stuffed (a part's place is fixed by the
- * instruction); a refused part carries its error and n_k zero bytes. */
+ * instruction); a refused part carries its error and n_k zero bytes (a part asked with n_k = 0: data length
+ * error, no data). A list with a part longer than a module can send is dropped by every module, so that no
+ * module is left waiting for a part that never comes. A waiting module checks the part before its own as it
+ * hears it (its ID, and its CRC against the bytes heard): anything else (the previous module silent, and the
+ * host's next frame instead) makes it give up rather than send into the middle of another frame. */
 #include <string.h>
 
 #include "internal.h"
@@ -74,6 +78,7 @@ void rcfwi_fast_read(rcfw_module *m, const rcfw_parser *f)
     uint32_t total = 1u, at = PACKET_HEAD;
     int32_t mine = -1;
     uint16_t my_a = 0, my_n = 0;
+    bool unanswerable = false;
     for (uint16_t k = 0; k < count; k++) {
         uint8_t id;
         uint16_t a, n;
@@ -84,17 +89,22 @@ void rcfwi_fast_read(rcfw_module *m, const rcfw_parser *f)
             my_n = n;
             m->fast_at = (uint16_t)at;
         }
+        if (mine < 0) {
+            m->fast_prev_id = id; /* the part before this module's, once it is found */
+            m->fast_prev_at = (uint16_t)at;
+        }
+        unanswerable |= n + PACKET_HEAD + 4u > sizeof m->tx;
         total += 4u + n;
         at += 4u + n;
+    }
+    if (unanswerable || total + 7u > 0xFFFFu) {
+        m->stats.bad_requests++; /* a part no module could send: every module drops the whole list */
+        return;
     }
     if (mine < 0) {
         return;
     }
     m->wd_ticks = 0;
-    if (my_n == 0u || my_n + PACKET_HEAD + 4u > sizeof m->tx || total + 7u > 0xFFFFu) {
-        m->stats.bad_requests++; /* cannot take part: the later modules wait in vain, the host asks again */
-        return;
-    }
     m->fast_total = (uint16_t)total;
     if (mine == 0) {
         static const uint8_t head[5] = {0xFFu, 0xFFu, 0xFDu, 0x00u, RCFW_ID_BROADCAST};
@@ -111,6 +121,20 @@ void rcfwi_fast_read(rcfw_module *m, const rcfw_parser *f)
     m->fast_crc = 0;
 }
 
+/* A byte of the packet past its header, at offset p: the part before this module's must carry its ID and
+ * end with the CRC of everything heard before that CRC. */
+static bool part_byte_ok(rcfw_module *m, uint16_t p, uint8_t b)
+{
+    if (p == m->fast_prev_at + 1u) {
+        return b == m->fast_prev_id;
+    }
+    if (p == m->fast_at - 2u) {
+        m->fast_expect = m->fast_crc;
+        return b == (uint8_t)m->fast_crc;
+    }
+    return p != m->fast_at - 1u || b == (uint8_t)(m->fast_expect >> 8);
+}
+
 /* One byte heard on the bus while this module waits for its place in a fast read packet. */
 void rcfwi_fast_heard(rcfw_module *m, uint8_t b)
 {
@@ -119,12 +143,15 @@ void rcfwi_fast_heard(rcfw_module *m, uint8_t b)
     }
     static const uint8_t head[8] = {0xFFu, 0xFFu, 0xFDu, 0x00u, RCFW_ID_BROADCAST, 0, 0, RCFW_INST_STATUS};
     uint16_t p = m->fast_pos;
-    bool ok = p >= PACKET_HEAD || (p == 5u && b == (uint8_t)m->fast_total) ||
-              (p == 6u && b == (uint8_t)(m->fast_total >> 8)) || (p != 5u && p != 6u && b == head[p]);
+    bool ok = p >= PACKET_HEAD ? part_byte_ok(m, p, b)
+                               : (p == 5u && b == (uint8_t)m->fast_total) ||
+                                     (p == 6u && b == (uint8_t)(m->fast_total >> 8)) ||
+                                     (p != 5u && p != 6u && b == head[p]);
     if (!ok) {
-        if (p < 4u) { /* not the packet's header yet: look again from this byte */
-            m->fast_pos = b == 0xFFu ? 1u : 0u;
-            m->fast_crc = b == 0xFFu ? rcfw_crc16(0, &b, 1) : 0u;
+        if (p < 4u) { /* not the packet's header yet: look again from this byte (FF FF FF: the last two) */
+            static const uint8_t ff2[2] = {0xFFu, 0xFFu};
+            m->fast_pos = b != 0xFFu ? 0u : p == 2u ? 2u : 1u;
+            m->fast_crc = rcfw_crc16(0, ff2, m->fast_pos);
             return;
         }
         m->fast_len = 0; /* some other packet: give up, the host asks again */

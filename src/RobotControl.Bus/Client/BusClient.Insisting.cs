@@ -19,9 +19,13 @@ public sealed partial class BusClient
         BinaryPrimitives.WriteUInt16LittleEndian(p, address);
         BinaryPrimitives.WriteUInt16LittleEndian(p[2..], (ushort)data.Length);
         var reply = Transact(id, Instruction.Read, p, data.Length, retries);
-        if (reply.Outcome == ReplyOutcome.Ok)
+        if (reply.Outcome == ReplyOutcome.Ok && _decoder.Parameters.Length == data.Length)
         {
             _decoder.Parameters.CopyTo(data);
+        }
+        else if (reply.Outcome == ReplyOutcome.Ok)
+        {
+            data.Clear(); // a refusal without data (firmware before issue 29; with it, the length asked of zeros)
         }
 
         return reply;

@@ -274,10 +274,11 @@ public sealed partial class BusClient : IDisposable
 
             if (_decoder.Parameters.Length != length)
             {
-                replies[index] = new Reply(ReplyOutcome.BadLength, _decoder.Error); // an error status without data
+                replies[index] = new Reply(ReplyOutcome.BadLength, _decoder.Error); // an error status without data (firmware before issue 29)
                 continue;
             }
 
+            // A refusal carries the length asked of zeros (as ROBOTIS devices answer): a final answer, as Read's.
             _decoder.Parameters.CopyTo(data.Slice(index * length, length));
             replies[index] = new Reply(ReplyOutcome.Ok, _decoder.Error);
             answered++;

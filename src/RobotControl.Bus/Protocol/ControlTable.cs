@@ -129,7 +129,10 @@ public sealed class ControlTable
                 f.GetProperty("max").GetDouble(),
                 f.GetProperty("default").GetDouble(),
                 f.TryGetProperty("unit", out var u) ? u.GetString() ?? string.Empty : string.Empty,
-                f.TryGetProperty("description", out var d) ? d.GetString() ?? string.Empty : string.Empty));
+                f.TryGetProperty("description", out var d) ? d.GetString() ?? string.Empty : string.Empty)
+            {
+                ZeroDisables = f.TryGetProperty("zero_disables", out var z) ? z.GetString() : null,
+            });
             var name = fields[^1].Name;
             if (f.TryGetProperty("bits", out var b))
             {
@@ -189,6 +192,12 @@ public sealed record ControlTableField(
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(motor, Count);
         return (ushort)(Address + (motor * Stride));
     }
+
+    /// <summary>
+    /// The protection that the value 0 switches off (e.g. "the motor's current limit"), as the definition's
+    /// <c>zero_disables</c> names it; null when 0 is an ordinary value.
+    /// </summary>
+    public string? ZeroDisables { get; init; }
 
     /// <summary>True for i16/i32.</summary>
     public bool Signed => Type.StartsWith('i');

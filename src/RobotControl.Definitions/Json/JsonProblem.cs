@@ -20,9 +20,34 @@ public sealed record JsonProblem(string Path, string Message)
         return this with { Path = Path.Length == 0 ? parent : $"{parent}.{Path}" };
     }
 
-    /// <inheritdoc />
-    public override string ToString() =>
+    /// <summary>The problem in one line: control characters from what the user typed (a key, a value) shown escaped.</summary>
+    public override string ToString() => OneLine(
         File is not null ? $"{File}: {Path}: {Message}"
         : Path.Length == 0 ? Message
-        : $"{Path}: {Message}";
+        : $"{Path}: {Message}");
+
+    /// <summary><paramref name="text"/> with every control character escaped (<c>\n</c>, <c>\t</c>, <c>\u0007</c>), so that it prints as one line.</summary>
+    public static string OneLine(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        if (!text.Any(char.IsControl))
+        {
+            return text;
+        }
+
+        var b = new System.Text.StringBuilder(text.Length + 8);
+        foreach (var c in text)
+        {
+            b.Append(c switch
+            {
+                '\n' => "\\n",
+                '\r' => "\\r",
+                '\t' => "\\t",
+                _ when char.IsControl(c) => $"\\u{(int)c:X4}",
+                _ => c.ToString(),
+            });
+        }
+
+        return b.ToString();
+    }
 }

@@ -110,6 +110,12 @@ internal static class ModuleSectionReader
                 {
                     sink.Add(mm.FieldPath("current_limit_A"), $"is {current}; must be below the module's current_sense_full_scale_A ({fullScale})");
                 }
+                else if (!sink.HasProblemAt(mm.FieldPath("current_limit_A")) && !sink.HasProblemAt(m.FieldPath("current_sense_full_scale_A")) && double.IsFinite(current) && double.IsFinite(fullScale) && fullScale > 0 && Math.Round(current * ModuleDefinition.RawPerAmpOf(fullScale)) < 1)
+                {
+                    // The module keeps the limit in ADC counts, and a limit of 0 counts switches its current limiter off.
+                    var least = 0.5 / ModuleDefinition.RawPerAmpOf(fullScale);
+                    sink.Add(mm.FieldPath("current_limit_A"), string.Create(System.Globalization.CultureInfo.InvariantCulture, $"is {current} A, which the module keeps as 0 current counts (current_sense_full_scale_A {fullScale} A = {PotCalibration.AdcFullScale} counts), and a current limit of 0 switches the module's current limiter off; give at least {least:G3} A"));
+                }
 
                 var speed = mm.Number("speed_limit_deg_s", min: 0.1, max: 100_000);
                 var hall = mm.Integer("hall_counts_per_rev", 1, 1024);

@@ -51,7 +51,14 @@ public sealed record ModuleLayout(int BaudRate, int WatchdogMs, int WatchdogOffM
 /// <param name="Location">Where it sits, e.g. <c>shoulder</c>, <c>upper_arm</c>, <c>forearm</c>.</param>
 /// <param name="CurrentSenseFullScaleA">Motor current at the current ADC's full scale (4095), A: the module's shunt and amplifier.</param>
 /// <param name="Motors">Motors on the module's channels.</param>
-public sealed record ModuleDefinition(byte Id, string Name, int Arm, string Location, double CurrentSenseFullScaleA, IReadOnlyList<ModuleMotorDefinition> Motors);
+public sealed record ModuleDefinition(byte Id, string Name, int Arm, string Location, double CurrentSenseFullScaleA, IReadOnlyList<ModuleMotorDefinition> Motors)
+{
+    /// <summary>Current ADC counts per ampere of a module whose full scale is <paramref name="fullScaleA"/>: the one conversion from amperes to the module's current units (the ADC is the pots' 12-bit one).</summary>
+    public static double RawPerAmpOf(double fullScaleA) => PotCalibration.AdcFullScale / fullScaleA;
+
+    /// <summary>Current ADC counts per ampere (<see cref="RawPerAmpOf"/>).</summary>
+    public double RawPerAmp => RawPerAmpOf(CurrentSenseFullScaleA);
+}
 
 /// <summary>One motor on a module channel, with the parameters the module keeps in FRAM.</summary>
 /// <param name="Channel">Bridge channel on the module (0..3).</param>

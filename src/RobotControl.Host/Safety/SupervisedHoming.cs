@@ -20,6 +20,7 @@ internal sealed class SupervisedHoming
     private readonly RobotController[] _controllers;
     private readonly MotorChecks _motors;
     private readonly StateMachine<RunLevel> _levels;
+    private readonly ProtectionsAtArming _protections;
     private bool _mustRehome;
     private bool _confirmByPots;
 
@@ -29,6 +30,7 @@ internal sealed class SupervisedHoming
         _controllers = [.. robot.Controllers];
         _motors = motors;
         _levels = levels;
+        _protections = new ProtectionsAtArming(robot);
     }
 
     /// <summary>An operator's reset: every motor is re-homed next, unless <paramref name="silencesOnly"/> caused the E-STOP and no module says a position may be wrong (then the pots confirm them).</summary>
@@ -39,11 +41,11 @@ internal sealed class SupervisedHoming
     }
 
     /// <summary>
-    /// From INIT: motors off; the modules' bus holds acknowledged; re-homed from the pots and verified where positions
+    /// From INIT: refused, with nothing moved, while a module has a protection switched off (<see cref="ProtectionsAtArming"/>); then motors off; the modules' bus holds acknowledged; re-homed from the pots and verified where positions
     /// may be lost; motors on, holding the measured positions, PEDAL_UP. Homing that does not verify every motor, or a
     /// module refusing the motors on, returns to INIT with its line.
     /// </summary>
-    /// <exception cref="InvalidOperationException">At E_STOP (the message names its first trip), or homing incomplete (the message says how many motors failed and the first).</exception>
+    /// <exception cref="InvalidOperationException">At E_STOP (the message names its first trip), a module with a protection switched off (the message names module, motor, field and value; nothing moved), or homing incomplete (the message says how many motors failed and the first).</exception>
     /// <exception cref="IOException">A module refused (the message names it).</exception>
     /// <param name="source">Who asked.</param>
     /// <param name="stopCause">The trip that moved the run level to E_STOP (not the first listed: that may be a soft one, or one from before a reset).</param>
@@ -57,6 +59,11 @@ internal sealed class SupervisedHoming
                 : trip.Check == SafetyCheck.Operator
                 ? $"homing ({source}) refused: E_STOP by an operator's emergency stop; an operator reset comes first"
                 : string.Create(CultureInfo.InvariantCulture, $"homing ({source}) refused: E_STOP since the {trip.Check.Name()} trip {trip.Joint} ({trip.Measured:0.###} {trip.Unit}, limit {trip.Limit:0.###})").Replace("  ", " ", StringComparison.Ordinal) + "; an operator reset comes first");
+        }
+
+        if (_protections.FirstSwitchedOff() is { } off)
+        {
+            throw new InvalidOperationException($"homing ({source}) refused: {off}; the supervisor does not arm a module without its protections (write the robot file's values: robotctl params set --from-robot-file)");
         }
 
         _levels.MoveTo(RunLevel.Homing, source, "homing from the joint pots");

@@ -250,10 +250,15 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
     /// <exception cref="IOException">A module refused or did not acknowledge a value.</exception>
     public int WriteParameters() => Slot.Run("writing parameters", _setup.WriteParameters);
 
-    /// <summary>Writes one persistent parameter of one motor (or module-wide field) and reads it back.</summary>
+    /// <summary>
+    /// Writes one persistent parameter of one motor (or module-wide field) and reads it back, through the one
+    /// parameter path (<see cref="RobotControl.Modules.ParameterWriter"/>): a value that switches a protection off (a current limit of 0,
+    /// ...) only with <paramref name="allowProtectionOff"/>, which the console never passes.
+    /// </summary>
+    /// <exception cref="ArgumentException">A rule refuses the value (<see cref="RobotControl.Modules.ParameterRules"/>); nothing was written.</exception>
     /// <exception cref="IOException">The module refused the value or read back something else.</exception>
-    public long WriteParameter(byte moduleId, string field, int motor, long value) =>
-        Slot.Run($"writing {field}[{motor}] of module {moduleId}", () => _setup.WriteParameter(moduleId, field, motor, value));
+    public long WriteParameter(byte moduleId, string field, int motor, long value, bool allowProtectionOff = false) =>
+        Slot.Run($"writing {field}[{motor}] of module {moduleId}", () => _setup.WriteParameter(moduleId, field, motor, value, allowProtectionOff));
 
     /// <summary>Reads one control-table value.</summary>
     /// <exception cref="IOException">The module does not answer.</exception>

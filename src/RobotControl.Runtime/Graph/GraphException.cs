@@ -38,7 +38,9 @@ public sealed class GraphException : Exception
     /// <summary>The graph file, when loading one.</summary>
     public string? File { get; }
 
+    /// <summary>One problem in one line (<c>file: invalid graph: path: message</c>); more, counted, one per line below.</summary>
     private static string Format(IReadOnlyList<JsonProblem> problems, string? file) =>
-        (file is null ? "invalid graph" : $"{file}: invalid graph") + $" ({problems.Count} problem{(problems.Count == 1 ? "" : "s")}):"
-        + string.Concat(problems.Select(p => Environment.NewLine + "  " + p));
+        (file is null ? "invalid graph" : $"{file}: invalid graph") + (problems.Count == 1
+            ? $": {problems[0]}"
+            : $" ({problems.Count} problems):" + string.Concat(problems.Select(p => Environment.NewLine + "  " + p)));
 }

@@ -58,15 +58,16 @@ public static class GraphFile
 
         ArgumentNullException.ThrowIfNull(catalog);
         var overrideProblems = new List<JsonProblem>();
-        var overridden = GraphSettingOverrides.Apply(text, overrides, catalog, fullPath, overrideProblems);
+        var written = new Dictionary<string, SettingOverride>(StringComparer.Ordinal);
+        var overridden = GraphSettingOverrides.Apply(text, overrides, catalog, fullPath, overrideProblems, written);
         LoadedGraph loaded;
         try
         {
             loaded = LoadFromText(overridden, fullPath, catalog, time);
         }
-        catch (GraphException ex) when (overrideProblems.Count > 0)
+        catch (GraphException ex) when (overrideProblems.Count > 0 || written.Count > 0)
         {
-            throw new GraphException([.. overrideProblems, .. ex.Problems], fullPath);
+            throw new GraphException([.. overrideProblems, .. GraphSettingOverrides.NameOverrides(ex.Problems, written)], fullPath);
         }
 
         return overrideProblems.Count == 0 ? loaded : throw new GraphException(overrideProblems, fullPath);

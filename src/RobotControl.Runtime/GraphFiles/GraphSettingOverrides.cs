@@ -21,10 +21,12 @@ public static class GraphSettingOverrides
 
     /// <summary>
     /// The graph JSON with <paramref name="overrides"/> applied (the text unchanged when there are none); an override
-    /// that names no instance is added to <paramref name="problems"/> and not applied.
+    /// that names no instance is added to <paramref name="problems"/> and not applied. Each applied override is put in
+    /// <paramref name="written"/> (when given) under the JSON path it wrote, so that the loader's problems there can
+    /// name it (<see cref="NameOverrides"/>).
     /// </summary>
     /// <exception cref="GraphException">The JSON is not a graph with an instances array.</exception>
-    public static string Apply(string json, IReadOnlyList<SettingOverride> overrides, PluginCatalog catalog, string path, ICollection<JsonProblem> problems)
+    public static string Apply(string json, IReadOnlyList<SettingOverride> overrides, PluginCatalog catalog, string path, ICollection<JsonProblem> problems, IDictionary<string, SettingOverride>? written = null)
     {
         ArgumentNullException.ThrowIfNull(json);
         ArgumentNullException.ThrowIfNull(overrides);
@@ -73,10 +75,29 @@ public static class GraphSettingOverrides
             }
 
             settings[item.Setting] = value;
+            if (written is not null)
+            {
+                written[string.Create(CultureInfo.InvariantCulture, $"$.instances[{instances.IndexOf(instance)}].settings.{item.Setting}")] = item;
+            }
         }
 
         return root.ToJsonString();
     }
+
+    /// <summary>
+    /// <paramref name="problems"/> with each one at (or inside) a path an override wrote named by that override
+    /// (<c>--set scaling.ratio=abc: $.instances[2].settings.ratio: expected a number, found string</c>): the user typed
+    /// the value on the command line, not in the file.
+    /// </summary>
+    public static IReadOnlyList<JsonProblem> NameOverrides(IReadOnlyList<JsonProblem> problems, IReadOnlyDictionary<string, SettingOverride> written)
+    {
+        ArgumentNullException.ThrowIfNull(problems);
+        ArgumentNullException.ThrowIfNull(written);
+        return [.. problems.Select(p => Writer(p.Path, written) is { } item ? new JsonProblem($"--set {item}", $"{p.Path}: {p.Message}") : p)];
+    }
+
+    private static SettingOverride? Writer(string path, IReadOnlyDictionary<string, SettingOverride> written) =>
+        written.FirstOrDefault(w => path == w.Key || path.StartsWith(w.Key + ".", StringComparison.Ordinal) || path.StartsWith(w.Key + "[", StringComparison.Ordinal)).Value;
 
     /// <summary>The override's JSON value, or null for a number setting given a non-finite number (NaN, Infinity), which JSON cannot hold.</summary>
     private static JsonValue? Value(SettingOverride item, JsonObject instance, PluginCatalog catalog)

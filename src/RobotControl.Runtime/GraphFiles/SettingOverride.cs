@@ -1,3 +1,5 @@
+using RobotControl.Definitions.Json;
+
 namespace RobotControl.Runtime.GraphFiles;
 
 /// <summary>One <c>--set &lt;instance&gt;.&lt;setting&gt;=&lt;value&gt;</c>: a setting of a graph instance replaced for one run.</summary>
@@ -16,12 +18,12 @@ public sealed record SettingOverride(string Instance, string Setting, string Val
         var dot = name.IndexOf('.', StringComparison.Ordinal);
         if (dot <= 0 || dot == name.Length - 1)
         {
-            throw new FormatException($"--set '{text}': expected <instance>.<setting>=<value>, e.g. sim.endpoint=tcp://127.0.0.1:23456");
+            throw new FormatException($"--set '{JsonProblem.OneLine(text)}': expected <instance>.<setting>=<value>, e.g. sim.endpoint=tcp://127.0.0.1:23456");
         }
 
         return new SettingOverride(name[..dot], name[(dot + 1)..], text[(equals + 1)..]);
     }
 
-    /// <inheritdoc />
-    public override string ToString() => $"{Instance}.{Setting}={Value}";
+    /// <summary>As typed, in one line (control characters escaped, <see cref="JsonProblem.OneLine"/>).</summary>
+    public override string ToString() => JsonProblem.OneLine($"{Instance}.{Setting}={Value}");
 }

@@ -28,7 +28,7 @@ public sealed class MaintenanceTests
     }
 
     [Fact]
-    public void A_refused_registration_is_not_kept_and_an_action_without_one_is_a_result_fail()
+    public void A_refused_registration_is_not_kept_and_an_action_without_one_is_an_instruction_error()
     {
         using var lb = new VirtualLb(start: false);
         var client = lb.Robot.Client;
@@ -37,7 +37,7 @@ public sealed class MaintenanceTests
         var action = client.Action(1);
 
         Assert.Equal(StatusError.DataRange, StatusErrors.Number(refused.Error));
-        Assert.Equal(StatusError.ResultFail, StatusErrors.Number(action.Error));
+        Assert.Equal(StatusError.Instruction, StatusErrors.Number(action.Error)); // the e-Manual: ACTION without REG WRITE
         Assert.Equal(0, Read(client, 1));
     }
 
@@ -50,7 +50,7 @@ public sealed class MaintenanceTests
         Assert.True(client.RegWrite(2, Watchdog.At(0), [0x64, 0x00]).Succeeded); // 100 ms
         Assert.True(client.Action(2).Succeeded);
         Assert.Equal(100, Read(client, 2));
-        Assert.Equal(StatusError.ResultFail, StatusErrors.Number(client.Action(2).Error));
+        Assert.Equal(StatusError.Instruction, StatusErrors.Number(client.Action(2).Error));
     }
 
     [Theory]

@@ -53,7 +53,17 @@ public sealed class ExchangeVectorTests
                 Assert.Contains(text[5..], description, StringComparison.Ordinal); // e.g. "access error"
                 Assert.Contains($"0x{(byte)error:X2}", description, StringComparison.Ordinal);
                 var fast = request.Instruction is (byte)Instruction.FastSyncRead or (byte)Instruction.FastBulkRead;
-                Assert.Equal(fast, reply.Parameters.Length != 0); // a refused request returns no data, a fast read part keeps its place
+                if (fast)
+                {
+                    Assert.NotEqual(0, reply.Parameters.Length); // a fast read part keeps its place
+                }
+                else
+                {
+                    // A refused read carries the requested length of zero bytes (as ROBOTIS devices answer); any
+                    // other refused request no data.
+                    Assert.Equal(RequestedLength(request, reply.Id), reply.Parameters.Length);
+                    Assert.All(reply.Parameters.ToArray(), b => Assert.Equal(0, b));
+                }
             }
         }
     }
@@ -84,6 +94,29 @@ public sealed class ExchangeVectorTests
     [InlineData(0x06, "0x06 data limit error")]
     public void Describe_names_the_number_and_the_alert(byte errorByte, string expected) =>
         Assert.Equal(expected, StatusErrors.Describe(errorByte));
+
+    /// <summary>The data length <paramref name="request"/> asks module <paramref name="id"/> for (0: not a read, or a read without its length).</summary>
+    private static int RequestedLength(FrameDecoder request, byte id)
+    {
+        var p = request.Parameters;
+        switch ((Instruction)request.Instruction)
+        {
+            case Instruction.Read or Instruction.SyncRead when p.Length >= 4:
+                return System.Buffers.Binary.BinaryPrimitives.ReadUInt16LittleEndian(p[2..]);
+            case Instruction.BulkRead:
+                for (var o = 0; o + 5 <= p.Length; o += 5)
+                {
+                    if (p[o] == id)
+                    {
+                        return System.Buffers.Binary.BinaryPrimitives.ReadUInt16LittleEndian(p[(o + 3)..]);
+                    }
+                }
+
+                return -1;
+            default:
+                return 0;
+        }
+    }
 
     private static JsonElement[] Load()
     {

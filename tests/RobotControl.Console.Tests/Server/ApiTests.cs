@@ -69,6 +69,26 @@ public sealed class ApiTests(ConsoleFixture console)
         console.ReleaseOperator();
     }
 
+    [Theory]
+    [InlineData("current_limit", "current_limit = 0 switches the motor's current limit off")]
+    [InlineData("speed_limit", "speed_limit = 0 switches the motor's setpoint speed limit off")]
+    public async Task A_parameter_write_that_switches_a_protection_off_is_refused_and_nothing_written(string parameter, string off)
+    {
+        // Issue 29: a current limit of 0 A came back 200 "written to FRAM", and teleoperation ran without a limiter.
+        using var http = await console.Operator("operator-protection-off");
+        var before = ConsoleFixture.Parameter(await ConsoleFixture.Motor(http, "right.elbow"), parameter);
+
+        var response = await http.PutAsJsonAsync($"api/motors/right.elbow/parameters/{parameter}", new { value = 0 });
+
+        Assert.Equal(HttpStatusCode.BadRequest, response.StatusCode);
+        var body = await response.Content.ReadAsStringAsync();
+        Assert.Contains(off, body, StringComparison.Ordinal);
+        Assert.DoesNotContain("written to FRAM", body, StringComparison.Ordinal);
+        (await http.PostAsync($"api/controllers/{(await ControllerOf(http, "right.elbow"))}/reload", null)).EnsureSuccessStatusCode();
+        Assert.Equal(before, ConsoleFixture.Parameter(await ConsoleFixture.Motor(http, "right.elbow"), parameter));
+        console.ReleaseOperator();
+    }
+
     private static async Task<int> ControllerOf(HttpClient http, string motor)
     {
         var controllers = await http.GetFromJsonAsync<System.Text.Json.JsonElement>("api/controllers");

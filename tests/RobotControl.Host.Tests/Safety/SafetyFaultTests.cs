@@ -155,11 +155,13 @@ public sealed class SafetyFaultTests
         Assert.True(run.LastForceS > 19.9, $"the haptic handles rendered no force after {run.LastForceS} s of teleoperation");
         Assert.Equal(0, run.Report.DeadlineMisses);
         // The main job's figures with the supervisor in the loop: the same as `robotctl run graphs/teleop-lb.json
-        // --virtual --duration 20s` without it (0.6816 / 1.592 mm since teleoperation starts where the arm is: the
+        // --virtual --duration 20s` without it, but for the supervisor's arming check (issue 29: it reads each motor's
+        // current and speed limits before homing, which starts the run a little later: 0.6815 / 1.592 mm; 0.6816 / 1.592 mm
+        // before it, since teleoperation starts where the arm is: the
         // path is anchored at the arms' measured start pose, 0.65 mm (right) and 0.17 mm (left) from where the master's
         // first pose mapped; 0.6834 / 1.548 mm before, since the status poll also reads back each module's bus
         // watchdog; 0.6806 / 1.575 mm before that; 0.6755 / 1.528 mm before the cycle polled the joint pots).
-        Assert.Equal(0.6816, Math.Round(run.Report.TrackingRmsMm, 4));
+        Assert.Equal(0.6815, Math.Round(run.Report.TrackingRmsMm, 4));
         Assert.Equal(1.592, Math.Round(run.Report.TrackingMaxMm, 3));
         Assert.InRange(run.WorstStepOverCap(), 0, 1);
     }

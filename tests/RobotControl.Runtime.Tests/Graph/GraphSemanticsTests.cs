@@ -213,13 +213,13 @@ public sealed class GraphSemanticsTests
     }
 
     [Fact]
-    public void The_message_of_an_invalid_graph_names_the_file_counts_the_problems_and_lists_each_on_its_own_line()
+    public void The_message_of_an_invalid_graph_names_the_file_counts_the_problems_and_lists_each_on_its_own_line_or_is_one_line_for_one()
     {
         var nl = Environment.NewLine;
         var two = new GraphException([new JsonProblem("wires[0].to", "no such input"), new JsonProblem("instances[1].type", "unknown type")], "g.json");
         Assert.Equal($"g.json: invalid graph (2 problems):{nl}  wires[0].to: no such input{nl}  instances[1].type: unknown type", two.Message);
         var one = new GraphException([new JsonProblem("", "graph has a cycle")]);
-        Assert.Equal($"invalid graph (1 problem):{nl}  graph has a cycle", one.Message);
+        Assert.Equal("invalid graph: graph has a cycle", one.Message);
         Assert.Equal(("g.json", 2), (two.File, two.Problems.Count));
     }
 }

@@ -48,12 +48,12 @@ public sealed class GraphSettingOverridesTests
     }
 
     [Fact]
-    public void An_overridden_value_gets_the_loaders_own_message_and_json_path()
+    public void An_overridden_value_gets_the_loaders_own_message_and_json_path_named_by_its_override()
     {
         var problems = Assert.Throws<GraphException>(() => Load("a.ratio=5", "b.samples=two", "a.nope=1")).Problems.Select(p => p.ToString()).ToList();
-        Assert.Contains(problems, p => p.StartsWith("$.instances[0].settings.ratio: 5 is outside 0.05..1", StringComparison.Ordinal));
-        Assert.Contains(problems, p => p.StartsWith("$.instances[1].settings.samples: expected an integer, found string", StringComparison.Ordinal));
-        Assert.Contains(problems, p => p.StartsWith("$.instances[0].settings.nope: unknown setting", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("--set a.ratio=5: $.instances[0].settings.ratio: 5 is outside 0.05..1", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("--set b.samples=two: $.instances[1].settings.samples: expected an integer, found string", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("--set a.nope=1: $.instances[0].settings.nope: unknown setting", StringComparison.Ordinal));
     }
 
     [Theory]
@@ -84,7 +84,7 @@ public sealed class GraphSettingOverridesTests
         var problems = Assert.Throws<GraphException>(() => Load("ghost.x=1", "a.ratio=5")).Problems.Select(p => p.ToString()).ToList();
         Assert.Equal(2, problems.Count);
         Assert.Equal("--set ghost.x=1: no instance named 'ghost' (instances: a, b)", problems[0]);
-        Assert.StartsWith("$.instances[0].settings.ratio: 5 is outside 0.05..1", problems[1], StringComparison.Ordinal);
+        Assert.StartsWith("--set a.ratio=5: $.instances[0].settings.ratio: 5 is outside 0.05..1", problems[1], StringComparison.Ordinal);
     }
 
     [Fact]

@@ -87,6 +87,11 @@ typedef struct rcfw_module {
     uint16_t fast_pos;
     uint16_t fast_crc;
     uint16_t fast_total; /* LEN of the combined packet */
+    /* the part just before this module's: where it starts in the packet, its ID, and the CRC its last two
+     * bytes must carry; heard otherwise, the bytes are not that packet and the module gives up */
+    uint16_t fast_prev_at;
+    uint8_t fast_prev_id;
+    uint16_t fast_expect;
     uint8_t body[RCFW_CT_SIZE + 8u];
     uint8_t tx[RCFW_TX_MAX];
     rcfw_stats stats;

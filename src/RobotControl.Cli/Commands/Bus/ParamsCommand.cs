@@ -80,9 +80,10 @@ internal sealed class ParamsCommand : ICliCommand
         var value = CliOption.OptionalNumber("--value", "Value in the field's units (see docs/protocol.md); checked against the field's own range", writable.Min(f => (long)f.Min), writable.Max(f => (long)f.Max));
         var fromFile = new Option<bool>("--from-robot-file") { Description = "Write every parameter the robot file implies into every module" };
         var yes = new Option<bool>("--yes") { Description = "Confirm a write of id (the module then answers only at the new ID) or a change of baud_rate (every module, then the host; verified by ping)" };
+        var protectionOff = new Option<bool>("--allow-protection-off") { Description = "Allow a value that switches a protection off (current_limit 0, speed_limit 0, bus_watchdog 0); a warning names what goes off" };
         var command = new Command("set", "Write one parameter (--module --field [--motor] --value) or all of them (--from-robot-file) into FRAM.");
         var busOptions = new BusOptions(command);
-        foreach (var o in new Option[] { module, field, motor, value, fromFile, yes })
+        foreach (var o in new Option[] { module, field, motor, value, fromFile, yes, protectionOff })
         {
             command.Options.Add(o);
         }
@@ -116,8 +117,14 @@ internal sealed class ParamsCommand : ICliCommand
                     throw new ArgumentException($"--field: the control table has no field '{name}' (writable: {string.Join(", ", table.Fields.Where(f => f.Writable).Select(f => f.Name))})");
                 }
 
-                ParameterGuard.CheckOne(session.Client, (byte)id, table[name], parse.GetValue(motor), v, parse.GetValue(yes));
-                var back = bus.WriteParameter((byte)id, name, parse.GetValue(motor), v);
+                var allowOff = parse.GetValue(protectionOff);
+                ParameterGuard.CheckOne(session.Client, (byte)id, table[name], parse.GetValue(motor), v, (parse.GetValue(yes), allowOff));
+                if (allowOff && ParameterRules.ProtectionOff(table[name], v) is { } off)
+                {
+                    parse.InvocationConfiguration.Error.WriteLine($"warning: module {id}: {off} (--allow-protection-off)");
+                }
+
+                var back = bus.WriteParameter((byte)id, name, parse.GetValue(motor), v, allowOff);
                 output.WriteLine($"module {id}: {name}[{parse.GetValue(motor)}] = {back} (read back)");
                 return 0;
             });

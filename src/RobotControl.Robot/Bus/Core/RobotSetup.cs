@@ -118,7 +118,7 @@ internal sealed class RobotSetup(RobotLayout layout, BusClient client, ModuleRos
         _parameters.WriteAll([.. roster.Active.Controllers.Select(c => (c.Id, ModuleParameters.For(layout.Definition, c.Definition, layout.Table)))]);
 
     /// <summary>One persistent value through the one parameter path (<see cref="ParameterWriter.Write"/>: checked, written, read back).</summary>
-    public long WriteParameter(byte moduleId, string field, int motor, long value) => _parameters.Write(moduleId, field, motor, value);
+    public long WriteParameter(byte moduleId, string field, int motor, long value, bool allowProtectionOff) => _parameters.Write(moduleId, field, motor, value, allowProtectionOff);
 
     public long ReadParameter(byte moduleId, string field, int motor) => _parameters.Read(moduleId, field, motor);
 

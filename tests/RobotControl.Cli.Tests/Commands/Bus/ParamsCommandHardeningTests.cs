@@ -18,6 +18,9 @@ public sealed class ParamsCommandHardeningTests
     [InlineData("baud_rate", 0, "8", "outside its range 0..7")]
     [InlineData("baud_rate", 0, "4", "leave --module out")]
     [InlineData("id", 0, "9", "add --yes to confirm")]
+    [InlineData("current_limit", 0, "0", "current_limit = 0 switches the motor's current limit off; a protection goes off only on purpose (robotctl params set --allow-protection-off)")]
+    [InlineData("speed_limit", 1, "0", "speed_limit = 0 switches the motor's setpoint speed limit off")]
+    [InlineData("bus_watchdog", 0, "0", "bus_watchdog = 0 switches the module's bus watchdog (both stages) off")]
     public void A_value_outside_the_control_table_or_its_rules_is_refused_and_not_stored(string field, int motor, string value, string expected)
     {
         using var bus = new PtyBus();
@@ -27,6 +30,33 @@ public sealed class ParamsCommandHardeningTests
 
         Cli.AssertRefused(result, expected);
         Assert.Equal(before, bus.Read(1, field, motor));
+    }
+
+    [Fact]
+    public void A_protection_is_switched_off_only_with_the_option_and_then_with_one_warning_naming_it()
+    {
+        using var bus = new PtyBus();
+        Assert.NotEqual(0, bus.Read(2, "current_limit", 0));
+
+        var (code, output, error) = bus.Run("params set", "--module", "2", "--field", "current_limit", "--motor", "0", "--value", "0", "--allow-protection-off");
+
+        Assert.True(code == 0, error);
+        var warning = Assert.Single(error.Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries));
+        Assert.Equal("warning: module 2: current_limit = 0 switches the motor's current limit off (--allow-protection-off)", warning);
+        Assert.Contains("current_limit[0] = 0 (read back)", output, StringComparison.Ordinal);
+        Assert.Equal(0, bus.Read(2, "current_limit", 0));
+    }
+
+    [Fact]
+    public void The_option_adds_no_warning_to_a_value_that_switches_nothing_off()
+    {
+        using var bus = new PtyBus();
+
+        var (code, _, error) = bus.Run("params set", "--module", "2", "--field", "current_limit", "--motor", "0", "--value", "1200", "--allow-protection-off");
+
+        Assert.True(code == 0, error);
+        Assert.Equal(string.Empty, error.Trim());
+        Assert.Equal(1200, bus.Read(2, "current_limit", 0));
     }
 
     [Fact]
