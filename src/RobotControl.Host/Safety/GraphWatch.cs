@@ -1,3 +1,4 @@
+using RobotControl.Definitions.Model;
 using RobotControl.Robot.Bus;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Robot;
@@ -8,21 +9,41 @@ namespace RobotControl.Host.Safety;
 /// What the supervisor watches of the graph that drives the robot, from the bus thread: where the loop's ticks spend
 /// their time (<see cref="TickProfile"/>: a late loop's trip names the plug-in it waits for, with no allocation) and
 /// whether the robot node holds because a plug-in upstream of it faulted (a trip naming the plug-in and what it threw).
-/// Without a graph (a supervisor on its own) it names the loop only.
+/// It also times the loop (<see cref="CheckLoop"/>). Without a graph (a supervisor on its own) it names the loop only.
 /// </summary>
 [WrittenBy(RobotThread.Bus)]
 internal sealed class GraphWatch
 {
     private readonly GraphProgram? _program;
     private readonly RobotNode? _node;
+    private readonly StallClock _clock;
+    private readonly TripRecorder _trip;
     private readonly double _periodMs;
     private bool _faultSeen;
 
-    public GraphWatch(GraphProgram? program = null, RobotNode? node = null, double periodMs = 0)
+    public GraphWatch(StallClock clock, TripRecorder trip, GraphProgram? program = null, RobotNode? node = null, double periodMs = 0)
     {
+        _clock = clock;
+        _trip = trip;
         _program = program;
         _node = node;
         _periodMs = periodMs;
+    }
+
+    /// <summary>
+    /// The loop behind, named by the plug-in it waits for. While it drives the arms (PEDAL_DOWN): its last tick older
+    /// than the stall limit (a tick that overran or hangs) is a soft trip, graded as a silence (from the modules'
+    /// torque-off stage on, the motors go off). While the arms hold (PEDAL_UP), only a loop dead for the torque-off
+    /// stage trips, taking the motors off: a dead loop no longer hears the operator's pedals, and the bus thread's
+    /// cycle would otherwise keep feeding the modules' watchdogs on its own.
+    /// </summary>
+    public void CheckLoop(long now, RunLevel level)
+    {
+        var lag = _clock.LoopLagAt(now, level);
+        if (lag > (level == RunLevel.PedalDown ? _clock.StallTicks : _clock.TorqueOffStageTicks))
+        {
+            _trip(SafetyCheck.DeadlineMiss, Culprit(), _clock.Ms(lag), _clock.Ms(_clock.StallTicks), "ms", now);
+        }
     }
 
     /// <summary>The plug-in a late loop waits for (in its tick now, else the slowest of the last tick if it took a loop period or more), or <c>loop</c>.</summary>

@@ -16,7 +16,7 @@ public sealed partial class SafetySupervisor
         CheckGap(now);
         if (Level is RunLevel.PedalUp or RunLevel.PedalDown)
         {
-            CheckLoop(now, Level); // before the write that takes the loop's setpoints (on the virtual schedule, after the ticks due)
+            _graph.CheckLoop(now, Level); // before the write that takes the loop's setpoints (on the virtual schedule, after the ticks due)
         }
     }
 
@@ -81,23 +81,6 @@ public sealed partial class SafetySupervisor
             // silence does: a cycle slowed by a silent module's timeouts is a gap too, and the silence is real.)
             _motorChecks.Discount(gap - _clock.StallTicks);
             Trip(SafetyCheck.HostStall, string.Empty, _clock.Ms(gap), _clock.Ms(_clock.StallTicks), "ms", now);
-        }
-    }
-
-    /// <summary>
-    /// The loop behind, named by the plug-in it waits for. While it drives the arms (PEDAL_DOWN): its last tick older
-    /// than the stall limit (a tick that overran or hangs) is a soft trip, graded as a silence (from the modules'
-    /// torque-off stage on, the motors go off). While the arms hold (PEDAL_UP), only a loop dead for the torque-off
-    /// stage trips, taking the motors off: a dead loop no longer hears the operator's pedals, and the bus thread's
-    /// cycle would otherwise keep feeding the modules' watchdogs on its own.
-    /// </summary>
-    private void CheckLoop(long now, RunLevel level)
-    {
-        var lag = _clock.LoopLagAt(now, level);
-        var over = level == RunLevel.PedalDown ? _clock.StallTicks : _clock.TorqueOffStageTicks;
-        if (lag > over)
-        {
-            Trip(SafetyCheck.DeadlineMiss, _graph.Culprit(), _clock.Ms(lag), _clock.Ms(_clock.StallTicks), "ms", now);
         }
     }
 

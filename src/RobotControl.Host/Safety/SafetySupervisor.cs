@@ -42,7 +42,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private readonly TripGrading _grading;
     private readonly StallClock _clock;
     private readonly SupervisedHoming _homing;
-    private GraphWatch _graph = new();
+    private GraphWatch _graph;
     private long _jumpsSeen;
     private volatile bool _torqueOffTaken;
     private OperatorPedal _lastPedal;
@@ -71,6 +71,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         _homing = new SupervisedHoming(robot, _motorChecks, _levels);
         _inputs = new OperatorInputs(robot.ArmCount, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
         _clock = new StallClock(_time, (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * _time.TimestampFrequency), _grading.TorqueOffStageMs, _inputs);
+        _graph = new GraphWatch(_clock, trip);
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.CycleCheck = this;
@@ -87,7 +88,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     {
         ArgumentNullException.ThrowIfNull(program);
         ArgumentNullException.ThrowIfNull(node);
-        _graph = new GraphWatch(program, node, LoopPeriod.TotalMilliseconds);
+        _graph = new GraphWatch(_clock, (check, joint, measured, limit, unit, now) => Trip(check, joint, measured, limit, unit, now), program, node, LoopPeriod.TotalMilliseconds);
     }
 
     /// <summary>The control loop's period.</summary>
