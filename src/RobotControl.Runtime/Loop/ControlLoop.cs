@@ -57,6 +57,15 @@ public sealed class ControlLoop : IDisposable
     /// <summary>Tick times and deadline misses.</summary>
     public TickStatistics Statistics { get; } = new();
 
+    /// <summary>
+    /// The clock a tick's cost is measured on for <see cref="LastTickCostNs"/>, in nanoseconds (a stepped caller gives
+    /// the thread's CPU time); null: not measured.
+    /// </summary>
+    public Func<long>? CostClock { get; set; }
+
+    /// <summary>What the last tick cost on <see cref="CostClock"/>, nanoseconds, without the time spent compiling (0: not measured).</summary>
+    public long LastTickCostNs { get; private set; }
+
     /// <summary>Ticks run so far.</summary>
     public long TickCount => Volatile.Read(ref _index);
 
@@ -264,9 +273,17 @@ public sealed class ControlLoop : IDisposable
         var index = _index;
         var elapsed = _time.GetElapsedTime(_startTimestamp, now);
         var context = new TickContext(index, now, elapsed, Period);
+        var costClock = CostClock;
+        var costBegin = costClock?.Invoke() ?? 0;
+        var jitBegin = costClock is null ? TimeSpan.Zero : JitInfo.GetCompilationTime(currentThread: true);
         var begin = Stopwatch.GetTimestamp();
         Program.Tick(context);
         var end = Stopwatch.GetTimestamp();
+        if (costClock is not null)
+        {
+            LastTickCostNs = costClock() - costBegin - (long)((JitInfo.GetCompilationTime(currentThread: true) - jitBegin).TotalMicroseconds * 1e3);
+        }
+
         Statistics.Record(end - begin);
 
         // Deadline: the tick due at _nextDue must finish (on the loop clock) before the next one is due.
