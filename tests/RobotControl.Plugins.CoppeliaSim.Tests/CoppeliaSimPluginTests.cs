@@ -173,7 +173,7 @@ public sealed class CoppeliaSimPluginTests
             {
               "schema": "robotcontrol/graph/1",
               "robot": "{{Path.Combine(BridgeTestSupport.Root, "hardware/robots/lb-1.0.json")}}",
-              "instances": [ { "name": "sim", "type": "coppeliasim", "settings": { "endpoint": "{{server.Endpoint}}", "stepping": true, "ticks_per_step": 10 } } ],
+              "instances": [ { "name": "sim", "type": "coppeliasim", "settings": { "endpoint": "{{server.Endpoint}}", "stepping": true, "ticks_per_step": 10, "call_timeout_ms": 10000 } } ],
               "wires": []
             }
             """;
@@ -188,7 +188,10 @@ public sealed class CoppeliaSimPluginTests
 
         Assert.True(server.Stepping);
         Assert.InRange(plugin.Steps, 20, (ticks / 10) + 1);
-        Assert.Equal(plugin.Steps, server.Steps);
+        // A step whose reply misses its deadline is sent (the server counts it) but not acknowledged (the plug-in does
+        // not). Under the whole suite's load the two counts once differed by one, most likely so: this test is about
+        // the stepping cadence, so its calls get 10 s (not the 500 ms default), and a missed one is named.
+        Assert.True(plugin.Steps == server.Steps, $"plug-in {plugin.Steps} steps, server {server.Steps}; last error: {plugin.LastError}");
     }
 
     [Fact]
