@@ -7,6 +7,7 @@ using RobotControl.Definitions.Loading;
 using RobotControl.Robot.Bus;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
+using RobotControl.Host.Session;
 
 namespace RobotControl.Bench.Bus;
 

@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using RobotControl.Kinematics.Inverse;
+using RobotControl.Host.Session;
 
 namespace RobotControl.Bench.Ik;
 

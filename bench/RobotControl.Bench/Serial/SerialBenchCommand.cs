@@ -4,6 +4,7 @@ using System.IO.Ports;
 using System.Text.Json;
 using RobotControl.Bench.Ik;
 using RobotControl.Bus.Transports.Serial;
+using RobotControl.Host.Session;
 
 namespace RobotControl.Bench.Serial;
 
