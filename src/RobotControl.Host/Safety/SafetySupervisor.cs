@@ -42,6 +42,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     private readonly TripGrading _grading;
     private readonly StallClock _clock;
     private readonly SupervisedHoming _homing;
+    private readonly TripRecorder _record; // how the parts record a trip (Trip, with the supervisor as its source)
     private GraphWatch _graph;
     private long _jumpsSeen;
     private volatile bool _torqueOffTaken;
@@ -65,13 +66,13 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
         LoopPeriod = loopPeriod;
         _levels = RunLevels.NewMachine(_time);
         _grading = new TripGrading(limits, robot.Definition.Modules.WatchdogOffMs); // the modules' torque-off stage (they hold from WatchdogMs)
-        TripRecorder trip = (check, joint, measured, limit, unit, now) => Trip(check, joint, measured, limit, unit, now);
-        _motorChecks = new MotorChecks(robot, limits, trip);
-        _moduleChecks = new ModuleChecks(robot, limits, trip);
+        _record = (check, joint, measured, limit, unit, now) => Trip(check, joint, measured, limit, unit, now);
+        _motorChecks = new MotorChecks(robot, limits, _record);
+        _moduleChecks = new ModuleChecks(robot, limits, _record);
         _homing = new SupervisedHoming(robot, _motorChecks, _levels);
         _inputs = new OperatorInputs(robot.ArmCount, limits.MasterSpeedMaxMmPerS, robot.HoldAtSent, _time);
         _clock = new StallClock(_time, (long)(limits.DeadlineMissesInARow * loopPeriod.TotalSeconds * _time.TimestampFrequency), _grading.TorqueOffStageMs, _inputs);
-        _graph = new GraphWatch(_clock, trip);
+        _graph = new GraphWatch(_clock, _record);
         Origin = _time.GetTimestamp();
         _robot.HoldAtMeasured();
         _robot.CycleCheck = this;
@@ -88,7 +89,7 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     {
         ArgumentNullException.ThrowIfNull(program);
         ArgumentNullException.ThrowIfNull(node);
-        _graph = new GraphWatch(_clock, (check, joint, measured, limit, unit, now) => Trip(check, joint, measured, limit, unit, now), program, node, LoopPeriod.TotalMilliseconds);
+        _graph = new GraphWatch(_clock, _record, program, node, LoopPeriod.TotalMilliseconds);
     }
 
     /// <summary>The control loop's period.</summary>

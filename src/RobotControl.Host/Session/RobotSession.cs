@@ -246,9 +246,12 @@ public sealed class RobotSession : IDisposable
     public void StopMotorsNow(string reason)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(reason);
-        _ = Interlocked.CompareExchange(ref _stopRequestedAt, Clock.GetTimestamp(), 0);
+        MarkStopRequested();
         Robot.EmergencyHold(reason, torqueOff: true);
     }
+
+    /// <summary>Keeps the time of the first stop request (any thread; later ones change nothing).</summary>
+    private void MarkStopRequested() => _ = Interlocked.CompareExchange(ref _stopRequestedAt, Clock.GetTimestamp(), 0);
 
     /// <summary>When the first stop was asked for, on <see cref="Clock"/> (0: not yet).</summary>
     public long StopRequestedAt => Interlocked.Read(ref _stopRequestedAt);
@@ -277,7 +280,7 @@ public sealed class RobotSession : IDisposable
         }
         else
         {
-            _ = Interlocked.CompareExchange(ref _stopRequestedAt, Clock.GetTimestamp(), 0);
+            MarkStopRequested(); // nothing cycles: the read-back below switches the motors off itself
         }
 
         var check = StopCheck.TorqueOffAndVerify(Robot) with { AfterRequest = Clock.GetElapsedTime(StopRequestedAt) };

@@ -112,19 +112,7 @@ public sealed class ControlLoop : IDisposable
             throw new InvalidOperationException("the loop runs on its own thread: it times its ticks itself");
         }
 
-        var deadline = _nextDue; // the last tick moved it one period past that tick's due time: its deadline
-        long misses = finishedTimestamp > deadline ? 1 : 0;
-        if (finishedTimestamp > deadline + _periodTimestamp)
-        {
-            var behind = (finishedTimestamp - deadline) / _periodTimestamp;
-            _nextDue = deadline + (behind * _periodTimestamp);
-            misses += behind;
-        }
-
-        if (misses > 0)
-        {
-            Statistics.AddDeadlineMisses(misses);
-        }
+        CountDeadline(_nextDue, finishedTimestamp); // the last tick moved its next due time one period past its own: its deadline
     }
 
     /// <summary>Starts the loop thread.</summary>
@@ -287,14 +275,23 @@ public sealed class ControlLoop : IDisposable
         Statistics.Record(end - begin);
 
         // Deadline: the tick due at _nextDue must finish (on the loop clock) before the next one is due.
-        var deadline = _nextDue + _periodTimestamp;
-        var finished = _time.GetTimestamp();
+        CountDeadline(_nextDue + _periodTimestamp, _time.GetTimestamp());
+        Volatile.Write(ref _index, index + 1);
+        _observer?.AfterTick(context);
+    }
+
+    /// <summary>
+    /// A tick whose deadline was <paramref name="deadline"/> finished at <paramref name="finished"/> (loop clock): a miss
+    /// when late, and a whole period (or more) behind, the ticks that cannot be run in time are skipped (misses too)
+    /// instead of bursting. The next tick is due at the deadline or, after skipping, later.
+    /// </summary>
+    private void CountDeadline(long deadline, long finished)
+    {
         long misses = finished > deadline ? 1 : 0;
         _nextDue = deadline;
-        if (finished > _nextDue + _periodTimestamp)
+        if (finished > deadline + _periodTimestamp)
         {
-            // A whole period (or more) behind: skip the ticks that cannot be run in time instead of bursting.
-            var behind = (finished - _nextDue) / _periodTimestamp;
+            var behind = (finished - deadline) / _periodTimestamp;
             _nextDue += behind * _periodTimestamp;
             misses += behind;
         }
@@ -303,8 +300,5 @@ public sealed class ControlLoop : IDisposable
         {
             Statistics.AddDeadlineMisses(misses);
         }
-
-        Volatile.Write(ref _index, index + 1);
-        _observer?.AfterTick(context);
     }
 }

@@ -13,6 +13,19 @@ using RobotControl.TestSupport;
 
 namespace RobotControl.Host.Tests.Safety;
 
+/// <summary>The test plug-ins' way of being slow: CPU time, which the virtual schedule counts, not wall time.</summary>
+internal static class Cpu
+{
+    /// <summary>Spins until the calling thread has spent <paramref name="ms"/> more of CPU time.</summary>
+    public static void Spend(double ms)
+    {
+        var until = ThreadCpuClock.NowNs() + (long)(ms * 1e6);
+        while (ThreadCpuClock.NowNs() < until)
+        {
+        }
+    }
+}
+
 /// <summary>Settings of the test plug-ins: from which tick they misbehave, and how long a slow one spends per tick.</summary>
 public sealed record MisbehaviourSettings : PluginSettings
 {
@@ -39,10 +52,7 @@ public sealed class CpuBurnerPlugin : Plugin<MisbehaviourSettings>
             return;
         }
 
-        var until = ThreadCpuClock.NowNs() + (long)(Settings.Ms * 1e6);
-        while (ThreadCpuClock.NowNs() < until)
-        {
-        }
+        Cpu.Spend(Settings.Ms);
     }
 }
 
@@ -83,10 +93,7 @@ public sealed class RandomCostPlugin : Plugin<RandomCostSettings>
 
         var ms = _random.Next(2, (int)Settings.MaxMs + 1);
         SlowTicks.Add((context.Index, ms));
-        var until = ThreadCpuClock.NowNs() + (ms * 1_000_000L);
-        while (ThreadCpuClock.NowNs() < until)
-        {
-        }
+        Cpu.Spend(ms);
     }
 }
 
