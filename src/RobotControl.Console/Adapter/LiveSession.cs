@@ -178,6 +178,9 @@ public sealed class LiveSession : IConsoleSession
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Answered(_surgeon.SetScaleAsync(arm, ratio));
 
     /// <inheritdoc />
+    public void StopMotorsNow(string reason) => _session.StopMotorsNow(reason);
+
+    /// <inheritdoc />
     public SessionEnd Close()
     {
         lock (_closeLock)
@@ -187,7 +190,7 @@ public sealed class LiveSession : IConsoleSession
                 return _end;
             }
 
-            _session.StopMotorsNow("console closing: motors off"); // first, lock-free: the next write, ahead of queued commands
+            StopMotorsNow("console closing: motors off"); // first, lock-free: the next write, ahead of queued commands
             _queue.Close();
             _stop.Cancel();
             _thread.Join();

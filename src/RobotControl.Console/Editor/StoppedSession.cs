@@ -41,6 +41,11 @@ internal sealed class StoppedSession : IConsoleSession
 
     public IReadOnlyList<EventEntry> EventsAfter(long after) => [.. _events.Where(e => e.Sequence > after)];
 
+    /// <summary>Nothing runs: the motors of the session that ran went off when it closed.</summary>
+    public void StopMotorsNow(string reason)
+    {
+    }
+
     /// <summary>How the last session ended, once it has closed: its events then include the stop's read-back.</summary>
     public void Ended(SessionEnd end)
     {

@@ -105,6 +105,9 @@ public sealed class SwitchableSession : IConsoleSession
     public Task<CommandResult> ClearFaultsAsync() => _current.ClearFaultsAsync();
 
     /// <inheritdoc />
+    public void StopMotorsNow(string reason) => _current.StopMotorsNow(reason);
+
+    /// <inheritdoc />
     public SessionEnd Close()
     {
         IConsoleSession current;

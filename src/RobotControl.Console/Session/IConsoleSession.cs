@@ -80,6 +80,12 @@ public interface IConsoleSession : IDisposable
     Task<CommandResult> SetScaleAsync(string arm, double ratio);
 
     /// <summary>
+    /// The first thing a stop does (a signal to the console), from any thread, lock-free and never waiting: the motors
+    /// are asked off at the next bus write, ahead of queued commands; <see cref="Close"/> then reads them back.
+    /// </summary>
+    void StopMotorsNow(string reason);
+
+    /// <summary>
     /// Ends the session: the loop stops, the motors go off and every module is read back. Once closed, it stays closed
     /// and returns the same end; <see cref="IDisposable.Dispose"/> closes it too.
     /// </summary>

@@ -140,6 +140,7 @@ internal sealed class ConsoleCommand : ICliCommand
             output.WriteLine("console: Ctrl+C stops");
             using (var signals = new StopSignals(error, "motors off and read back first, then pages closed, loop off"))
             {
+                using var motorsFirst = signals.Token.Register(() => switchable.StopMotorsNow("stop requested: motors off")); // from the signal's own thread
                 signals.Token.WaitHandle.WaitOne();
                 end = switchable.Close(); // the motors first (read back), whatever the pages and their requests are doing
                 CloseServer(server, error);
