@@ -126,8 +126,9 @@ public static class HeadlessRun
     /// <summary>
     /// Without a pedal wired to the robot node (the shipped graphs), the harness is the operator and holds the pedal
     /// down for the run; with one, the pedal moves the run level (<see cref="SafetySupervisor"/>). On the wall clock
-    /// the press runs on the bus thread between cycles; a trip that came first (a stalled machine at start) leaves the
-    /// run at E_STOP, holding, and is reported, as any trip.
+    /// the press runs on the bus thread between cycles. A refused press is reported in the run's faults and the run goes
+    /// on: after a trip that came first (a stalled machine at start) at E_STOP, holding; at PEDAL_UP (a module silent for
+    /// a moment) the harness presses again as after a soft trip.
     /// </summary>
     private static void PressPedal(RobotSession session, long begin, List<FaultEntry> faults)
     {
@@ -141,8 +142,10 @@ public static class HeadlessRun
         {
             session.Supervisor.PedalDown("harness");
         }
-        catch (InvalidOperationException ex) when (session.Supervisor.Level == RunLevel.EStop)
+        catch (Exception ex) when (ex is InvalidOperationException or IOException)
         {
+            // Refused (a trip came first; a module silent for a moment on a loaded machine; the link failed): the run goes
+            // on and its report says so; at PEDAL_UP the harness presses again as after a soft trip (ReEngagement).
             faults.Add(new FaultEntry(0, "harness", $"the pedal was not pressed: {ex.Message}"));
         }
     }
