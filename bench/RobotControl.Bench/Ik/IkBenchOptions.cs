@@ -13,8 +13,15 @@ internal sealed record IkBenchOptions(
     int TrackingSteps,
     OrientationAxes? Axes,
     bool Kdl,
-    int Repeat)
+    int Repeat,
+    IReadOnlyList<string> Sets,
+    int SpecialSamples,
+    int Worst,
+    string? Replay)
 {
+    /// <summary>The target sets beside the uniform one (IkSpecialSets).</summary>
+    public static readonly string[] SpecialSetNames = ["near_singular", "at_limits", "near_boundary"];
+
     public static IkBenchOptions? Parse(string[] args)
     {
         string? robot = null;
@@ -27,6 +34,10 @@ internal sealed record IkBenchOptions(
         var kdl = true;
         var noBaseline = false;
         var repeat = 3;
+        string[] sets = ["random", .. SpecialSetNames];
+        int? special = null;
+        var worst = 10;
+        string? replay = null;
         for (var i = 0; i < args.Length; i++)
         {
             string Next() => i + 1 < args.Length ? args[++i] : throw new ArgumentException($"{args[i]} needs a value");
@@ -50,8 +61,24 @@ internal sealed record IkBenchOptions(
                 case "--no-kdl": kdl = false; break;
                 case "--no-baseline": noBaseline = true; break;
                 case "--repeat": repeat = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--sets":
+                    sets = Next().Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
+                    if (sets.FirstOrDefault(x => x != "random" && !SpecialSetNames.Contains(x)) is { } unknown)
+                    {
+                        throw new ArgumentException($"unknown --sets entry {unknown}: random, {string.Join(", ", SpecialSetNames)}");
+                    }
+
+                    break;
+                case "--special-samples": special = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--worst": worst = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--replay": replay = Next(); break;
                 default: return null;
             }
+        }
+
+        if (replay is not null)
+        {
+            return new IkBenchOptions(robot ?? "", 0, seed, json, 0, 2, axes, false, Math.Max(repeat, 1), [], 0, worst, replay);
         }
 
         if (robot is null || samples < 1)
@@ -61,6 +88,7 @@ internal sealed record IkBenchOptions(
 
         // The baseline runs up to 15,000 CCD cycles per target; by default it gets the first 1,000 targets.
         var baselineSamples = noBaseline ? 0 : baseline ?? Math.Min(samples, 1_000);
-        return new IkBenchOptions(robot, samples, seed, json, baselineSamples, Math.Max(tracking, 2), axes, kdl, Math.Max(repeat, 1));
+        return new IkBenchOptions(robot, samples, seed, json, baselineSamples, Math.Max(tracking, 2), axes, kdl, Math.Max(repeat, 1),
+            sets, Math.Max(special ?? Math.Min(samples, 100_000), 1), Math.Max(worst, 0), null);
     }
 }

@@ -10,12 +10,16 @@ namespace RobotControl.Bench.Ik;
 /// </summary>
 internal sealed class IkTargetSet
 {
-    private IkTargetSet(KinematicChain chain, IkTarget[] targets, double[][] joints)
+    private IkTargetSet(string name, KinematicChain chain, IkTarget[] targets, double[][] joints)
     {
+        Name = name;
         Chain = chain;
         Targets = targets;
         Joints = joints;
     }
+
+    /// <summary>What the set is (random, near_singular, at_limits, near_boundary, tracking), as the JSON names it.</summary>
+    public string Name { get; }
 
     public KinematicChain Chain { get; }
 
@@ -26,25 +30,41 @@ internal sealed class IkTargetSet
 
     public static IkTargetSet Random(KinematicChain chain, int count, ulong seed, OrientationAxes axes)
     {
-        var state = chain.CreateState();
         var random = new BenchRandom(seed);
         var n = chain.JointCount;
-        var targets = new IkTarget[count];
         var joints = new double[count][];
         for (var s = 0; s < count; s++)
         {
-            var q = new double[n];
-            for (var i = 0; i < n; i++)
-            {
-                q[i] = chain.MinRad[i] + (random.NextDouble() * (chain.MaxRad[i] - chain.MinRad[i]));
-            }
-
-            state.Update(q);
-            targets[s] = new IkTarget(state.ToolPosition, state.ToolRotation, axes);
-            joints[s] = q;
+            joints[s] = Uniform(chain, random);
         }
 
-        return new IkTargetSet(chain, targets, joints);
+        return FromJoints("random", chain, joints, axes);
+    }
+
+    /// <summary>The targets that <paramref name="joints"/> reach, by forward kinematics.</summary>
+    public static IkTargetSet FromJoints(string name, KinematicChain chain, double[][] joints, OrientationAxes axes)
+    {
+        var state = chain.CreateState();
+        var targets = new IkTarget[joints.Length];
+        for (var s = 0; s < joints.Length; s++)
+        {
+            state.Update(joints[s]);
+            targets[s] = new IkTarget(state.ToolPosition, state.ToolRotation, axes);
+        }
+
+        return new IkTargetSet(name, chain, targets, joints);
+    }
+
+    /// <summary>A joint vector uniform within the joint ranges.</summary>
+    public static double[] Uniform(KinematicChain chain, BenchRandom random)
+    {
+        var q = new double[chain.JointCount];
+        for (var i = 0; i < q.Length; i++)
+        {
+            q[i] = chain.MinRad[i] + (random.NextDouble() * (chain.MaxRad[i] - chain.MinRad[i]));
+        }
+
+        return q;
     }
 
     /// <summary>
@@ -107,7 +127,7 @@ internal sealed class IkTargetSet
 
             if (largest <= maxStepMm)
             {
-                return new IkTargetSet(chain, targets, joints);
+                return new IkTargetSet("tracking", chain, targets, joints);
             }
 
             dt *= 0.8 * maxStepMm / largest;

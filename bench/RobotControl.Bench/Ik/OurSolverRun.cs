@@ -11,7 +11,8 @@ namespace RobotControl.Bench.Ik;
 /// </summary>
 internal static class OurSolverRun
 {
-    public static (SolverStats Stats, double BytesPerSolve) Random(IkTargetSet set, SolveCheck check, IkOptions options, int repeat)
+
+    public static OurRandomRun Random(IkTargetSet set, SolveCheck check, IkOptions options, int repeat)
     {
         var chain = set.Chain;
         var solver = new IkSolver(chain, options);
@@ -19,35 +20,48 @@ internal static class OurSolverRun
         var seed = new double[n];
         chain.MidRange(seed);
         var q = new double[n];
-        var times = new double[set.Targets.Length];
-        var solved = 0;
+        var count = set.Targets.Length;
+        var times = new double[count];
+        var solved = new bool[count];
+        var iterations = new int[count];
+        var status = new IkStatus[count];
         Warm(solver, set, seed, q);
-        var iterations = new int[set.Targets.Length];
         var before = GC.GetAllocatedBytesForCurrentThread();
         Array.Fill(times, double.PositiveInfinity);
         for (var pass = 0; pass < repeat; pass++)
         {
-            solved = 0;
-            for (var s = 0; s < set.Targets.Length; s++)
+            for (var s = 0; s < count; s++)
             {
                 var start = Stopwatch.GetTimestamp();
                 var result = solver.Solve(set.Targets[s], seed, q);
                 times[s] = Math.Min(times[s], Stopwatch.GetElapsedTime(start).TotalMicroseconds);
                 iterations[s] = result.Iterations;
-                solved += check.Solved(set.Targets[s], q) ? 1 : 0;
+                status[s] = result.Status;
+                solved[s] = check.Solved(set.Targets[s], q);
             }
         }
 
         var bytes = (GC.GetAllocatedBytesForCurrentThread() - before) / repeat;
-        var cpuStart = ThreadCpuClock.NowUs();
-        foreach (var target in set.Targets)
+
+        // Thread CPU time, target by target, in passes of their own (two clock reads per solve), the least of the
+        // repeated passes as for wall time: interrupts and a sibling hyperthread's load also land on CPU time.
+        var cpu = new double[count];
+        Array.Fill(cpu, double.PositiveInfinity);
+        for (var pass = 0; pass < repeat; pass++)
         {
-            solver.Solve(target, seed, q);
+            for (var s = 0; s < count; s++)
+            {
+                var cpuStart = ThreadCpuClock.NowNs();
+                solver.Solve(set.Targets[s], seed, q);
+                cpu[s] = Math.Min(cpu[s], (ThreadCpuClock.NowNs() - cpuStart) * 1e-3);
+            }
         }
 
-        var cpu = (ThreadCpuClock.NowUs() - cpuStart) / set.Targets.Length;
-        var stats = SolverStats.From("ours (CCD + bounded LM, restarts)", times, solved, IterationNote(iterations)) with { MeanCpuUs = cpu };
-        return (stats, (double)bytes / set.Targets.Length);
+        var cpuTotal = cpu.Sum();
+        var solvedCount = solved.Count(x => x);
+        var stats = SolverStats.From($"ours (CCD + bounded LM, restarts), {set.Name}", times, solvedCount, IterationNote(iterations))
+            with { MeanCpuUs = ThreadCpuClock.Available ? cpuTotal / count : double.NaN };
+        return new OurRandomRun(set, stats, (double)bytes / count, times, cpu, iterations, solved, status);
     }
 
     public static (SolverStats Stats, double BytesPerSolve) Tracking(IkTargetSet trajectory, SolveCheck check, IkOptions options, int repeat)

@@ -3,6 +3,12 @@ namespace RobotControl.Bench.Ik;
 /// <summary>Solve rate and per-solve time statistics of one solver over one target set.</summary>
 internal sealed record SolverStats(string Name, int Samples, double SolveRate, double MeanUs, double MedianUs, double P99Us, string Note)
 {
+    /// <summary>99.9th percentile of the per-solve times.</summary>
+    public double P999Us { get; init; }
+
+    /// <summary>The slowest solve.</summary>
+    public double MaxUs { get; init; }
+
     /// <summary>Thread CPU time per solve over an untimed second pass (NaN if not measured).</summary>
     public double MeanCpuUs { get; init; } = double.NaN;
 
@@ -17,10 +23,14 @@ internal sealed record SolverStats(string Name, int Samples, double SolveRate, d
             count == 0 ? 0 : sorted.Average(),
             Percentile(sorted, 0.5),
             Percentile(sorted, 0.99),
-            note);
+            note)
+        {
+            P999Us = Percentile(sorted, 0.999),
+            MaxUs = count == 0 ? 0 : sorted[^1],
+        };
     }
 
-    private static double Percentile(double[] sorted, double p)
+    public static double Percentile(double[] sorted, double p)
     {
         if (sorted.Length == 0)
         {

@@ -36,8 +36,8 @@ public sealed record InverseKinematicsSettings : PluginSettings
     [Setting("Upper bound on iterations per solve (bounds the tick's time).", Minimum = 1, Maximum = 100000)]
     public int MaxIterations { get; init; } = 200;
 
-    /// <summary>Random restarts per solve; 0 keeps the solution continuous while tracking.</summary>
-    [Setting("Random restarts allowed when a solve stalls; 0 keeps tracking continuous (a restart may jump to another branch).", Minimum = 0, Maximum = 100)]
+    /// <summary>Restarts per solve; 0 keeps the solution continuous while tracking.</summary>
+    [Setting("Restarts allowed when a solve stalls (hops along a singular pose, then fixed seeds nearest the target); 0 keeps tracking continuous (a restart may jump to another branch).", Minimum = 0, Maximum = 100)]
     public int MaxRestarts { get; init; }
 
     /// <summary>Workspace spring stiffness k_s.</summary>

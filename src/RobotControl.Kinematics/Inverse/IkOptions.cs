@@ -18,9 +18,16 @@ public sealed record IkOptions
     /// <summary>Workspace spring stiffness k_s, N/mm, for the force output when unreachable.</summary>
     public double WorkspaceStiffnessNPerMm { get; init; } = 0.05;
 
-    /// <summary>Upper bound on work per solve (CCD cycles + Levenberg-Marquardt iterations), so the control loop's time is bounded.</summary>
+    /// <summary>
+    /// Hard ceiling on work per solve (CCD cycles + Levenberg-Marquardt trial steps), so the control loop's time is
+    /// bounded: a solve never reports more, and one that meets it returns the best pose found with
+    /// <see cref="IkResult.AtCeiling"/>. The time per iteration is measured in docs/perf/ik.md.
+    /// </summary>
     public int MaxIterations { get; init; } = 200;
 
-    /// <summary>Random restarts allowed when stuck at a limit or local minimum (0 disables; deterministic seed).</summary>
-    public int MaxRestarts { get; init; } = 8;
+    /// <summary>
+    /// Restarts allowed when a run stalls at a limit or a local minimum: hops along a singular pose's free direction,
+    /// then the nearest unused fixed seeds (deterministic). 0 disables them, which keeps tracking continuous.
+    /// </summary>
+    public int MaxRestarts { get; init; } = 32;
 }

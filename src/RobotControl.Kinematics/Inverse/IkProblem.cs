@@ -24,11 +24,17 @@ internal sealed class IkProblem
     private readonly int[] _selectedAxis = new int[3];
     private readonly double _chordToleranceSquared;
 
+    // NormalEquations' workspace: per joint the Jacobian column as 4 blocks of 3 (position, then up to three axes),
+    // and the residual in the same blocks.
+    private readonly Vector3d[] _columns;
+    private readonly Vector3d[] _residual = new Vector3d[4];
+
     internal IkProblem(KinematicChain chain, IkOptions options)
     {
         Chain = chain;
         _state = chain.CreateState();
         JointCount = chain.JointCount;
+        _columns = new Vector3d[4 * chain.JointCount];
         PositionWeight = options.PositionWeight;
         OrientationWeight = options.OrientationWeight;
         SqrtPositionWeight = Math.Sqrt(PositionWeight);
@@ -148,32 +154,30 @@ internal sealed class IkProblem
     internal void NormalEquations(Span<double> jacobian, Span<double> normal, Span<double> jtr)
     {
         var n = JointCount;
-        var m = ResidualCount;
+        var axisCount = AxisCount;
         var end = _state.ToolPosition;
         var rotation = _state.ToolRotation;
-        Span<double> residual = stackalloc double[12];
-        var dp = (end - TargetPosition) * SqrtPositionWeight;
-        residual[0] = dp.X;
-        residual[1] = dp.Y;
-        residual[2] = dp.Z;
-        for (var k = 0; k < AxisCount; k++)
+        var columns = _columns.AsSpan();
+        var residual = _residual.AsSpan();
+        residual[0] = (end - TargetPosition) * SqrtPositionWeight;
+        for (var k = 0; k < axisCount; k++)
         {
-            var d = (rotation[_selectedAxis[k]] - _targetAxis[k]) * SqrtOrientationWeight;
-            residual[3 + (3 * k)] = d.X;
-            residual[4 + (3 * k)] = d.Y;
-            residual[5 + (3 * k)] = d.Z;
+            residual[1 + k] = (rotation[_selectedAxis[k]] - _targetAxis[k]) * SqrtOrientationWeight;
         }
 
+        // Column i of J in 3-vector blocks: the position block, then one block per selected axis.
         for (var i = 0; i < n; i++)
         {
             var z = _state.JointAxis(i);
             var v = Vector3d.Cross(z, end - _state.JointOrigin(i)) * SqrtPositionWeight;
+            columns[i * 4] = v;
             jacobian[i] = v.X;
             jacobian[n + i] = v.Y;
             jacobian[(2 * n) + i] = v.Z;
-            for (var k = 0; k < AxisCount; k++)
+            for (var k = 0; k < axisCount; k++)
             {
                 var w = Vector3d.Cross(z, rotation[_selectedAxis[k]]) * SqrtOrientationWeight;
+                columns[(i * 4) + 1 + k] = w;
                 var row = 3 + (3 * k);
                 jacobian[(row * n) + i] = w.X;
                 jacobian[((row + 1) * n) + i] = w.Y;
@@ -183,19 +187,21 @@ internal sealed class IkProblem
 
         for (var i = 0; i < n; i++)
         {
+            var ci = columns.Slice(i * 4, 1 + axisCount);
             var s = 0.0;
-            for (var r = 0; r < m; r++)
+            for (var b = 0; b < ci.Length; b++)
             {
-                s += jacobian[(r * n) + i] * residual[r];
+                s += Vector3d.Dot(ci[b], residual[b]);
             }
 
             jtr[i] = s;
             for (var j = 0; j <= i; j++)
             {
+                var cj = columns.Slice(j * 4, ci.Length);
                 var a = 0.0;
-                for (var r = 0; r < m; r++)
+                for (var b = 0; b < ci.Length; b++)
                 {
-                    a += jacobian[(r * n) + i] * jacobian[(r * n) + j];
+                    a += Vector3d.Dot(ci[b], cj[b]);
                 }
 
                 normal[(i * n) + j] = a;

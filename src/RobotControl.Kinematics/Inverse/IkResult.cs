@@ -11,14 +11,19 @@ namespace RobotControl.Kinematics.Inverse;
 /// <param name="PositionErrorMm">|Pd - Ph|, mm.</param>
 /// <param name="OrientationErrorRad">Largest angle between a selected target axis and the reached one, radians.</param>
 /// <param name="WorkspaceForce">k_s (Ph - Pd) in the arm's base frame, newtons (zero when reached), before any per-axis clamp.</param>
-/// <param name="Iterations">CCD cycles plus Levenberg-Marquardt iterations used.</param>
+/// <param name="Iterations">CCD cycles plus Levenberg-Marquardt iterations used (never more than <see cref="IkOptions.MaxIterations"/>).</param>
+/// <param name="AtCeiling">
+/// Not reached because the iteration ceiling (<see cref="IkOptions.MaxIterations"/>) ran out: the pose is the best one
+/// found, and the target may still be reachable. False when reached, and when every start stalled before the ceiling.
+/// </param>
 public readonly record struct IkResult(
     IkStatus Status,
     Vector3d ReachedPosition,
     double PositionErrorMm,
     double OrientationErrorRad,
     Vector3d WorkspaceForce,
-    int Iterations)
+    int Iterations,
+    bool AtCeiling = false)
 {
     /// <summary>True when the target was reached within tolerance.</summary>
     public bool Reached => Status == IkStatus.Reached;

@@ -6,9 +6,13 @@ namespace RobotControl.Kinematics.Inverse;
 /// <summary>
 /// Numerical inverse kinematics for any revolute DH chain (docs/algorithms.md): cyclic coordinate descent with the analytic
 /// per-joint step to get near, then a bound-constrained damped Gauss-Newton (Levenberg-Marquardt) on the exact Jacobian
-/// of position and selected axes ((3 + 3k) x n) with the joint limits inside the iteration, and deterministic random restarts when a run stalls at a limit
-/// or a local minimum. Warm starts: pass the previous solution as the seed. An unreachable or degenerate target gives
-/// the best reachable pose found and a finite workspace force. One instance per thread; allocates only when
+/// of position and selected axes ((3 + 3k) x n) with the joint limits inside the iteration. When a run stalls at a limit
+/// or a local minimum it restarts: first by hops along the free direction of a singular pose
+/// (<see cref="AlignedAxisHops"/>), then from the nearest unused seed of a fixed set spread over the joint box
+/// (<see cref="RestartSeeds"/>); all deterministic. Warm starts: pass the previous solution as the seed. The work per
+/// solve has a hard ceiling (<see cref="IkOptions.MaxIterations"/>); a solve that meets it returns the best pose found,
+/// flagged (<see cref="IkResult.AtCeiling"/>). An unreachable or degenerate target gives the best reachable pose found
+/// and a finite workspace force. One instance per thread; allocates only when
 /// constructed. The output is joint angles; map them to motors (shoulder couplings) with
 /// <see cref="Coupling.JointMotorMap"/>.
 /// </summary>
@@ -16,17 +20,19 @@ public sealed class IkSolver
 {
     // Tuned on LB-1.0 / CRB-1.0 with bench/RobotControl.Bench ik (docs/perf/ik.md).
     // CCD cycles before the Newton steps on the first start only: from the seed they cut the iteration count by a
-    // fifth; from random restart seeds they tended to fold the LB-1.0 elbow onto its 0 limit (a local minimum).
+    // fifth; from restart seeds they tended to fold the LB-1.0 elbow onto its 0 limit (a local minimum).
     private const int CcdCyclesFirstStart = 1;
 
     // A run that gains less than this fraction of its cost in an accepted step is at a local minimum: restart.
     private const double StallRatio = 1e-4;
     private const int StepsPerRun = 40;
 
+    // Stalled poses searched for aligned axes per solve (each proposes up to AlignedAxisHops.MaxHops restarts).
+    private const int MaxHopSearches = 2;
+
     // Unreachable: the best start is polished to its constrained minimum (the restart loop stops runs early).
     private const int PolishSteps = 30;
     private const double PolishStallRatio = 1e-13;
-    private const ulong RestartSeed = 0x5DEECE66DUL;
 
     private readonly IkProblem _problem;
     private readonly BoundedLevenbergMarquardt _descent;
@@ -34,6 +40,8 @@ public sealed class IkSolver
     private readonly double[] _best;
     private readonly double[] _sampleMin;
     private readonly double[] _sampleMax;
+    private readonly RestartSeeds _restartSeeds;
+    private readonly AlignedAxisHops _hops;
 
     /// <summary>Creates a solver and all its workspace for <paramref name="chain"/>.</summary>
     /// <exception cref="ArgumentException">A joint range is empty or NaN, or an option is out of range.</exception>
@@ -65,6 +73,8 @@ public sealed class IkSolver
         _descent = new BoundedLevenbergMarquardt(chain);
         _current = new double[n];
         _best = new double[n];
+        _restartSeeds = new RestartSeeds(chain, _sampleMin, _sampleMax);
+        _hops = new AlignedAxisHops(chain, _sampleMin, _sampleMax);
     }
 
     /// <summary>The chain solved for.</summary>
@@ -113,12 +123,13 @@ public sealed class IkSolver
         var totalBudget = Math.Max(Options.MaxIterations, 1);
         var loopBudget = Math.Max(totalBudget - PolishSteps, (totalBudget + 1) / 2);
         var budget = loopBudget;
-        var random = new XorShiftRandom(RestartSeed);
         var best = _best.AsSpan();
         var cost = problem.Evaluate(current);
         current.CopyTo(best);
         var bestCost = cost;
         var reached = false;
+        var hopped = 0;
+        _hops.Clear();
         for (var restart = 0; ; restart++)
         {
             // A warm start that is already close goes straight to the Newton steps; CCD only helps from afar.
@@ -132,6 +143,12 @@ public sealed class IkSolver
             }
 
             var outcome = _descent.Run(problem, current, ref cost, ref budget, StepsPerRun, StallRatio);
+
+            // A run that used its steps while still converging (slowly, near a singularity) and is close goes on.
+            while (outcome == BoundedLevenbergMarquardt.Outcome.OutOfBudget && budget > 0 && cost < WarmStartCost())
+            {
+                outcome = _descent.Run(problem, current, ref cost, ref budget, StepsPerRun, StallRatio);
+            }
             if (outcome == BoundedLevenbergMarquardt.Outcome.Reached)
             {
                 current.CopyTo(best);
@@ -150,10 +167,25 @@ public sealed class IkSolver
                 break;
             }
 
-            for (var i = 0; i < n; i++)
+            // Stalled close to the target at a singular pose: hop along its free direction before trying far seeds.
+            if (!_hops.Any && hopped < MaxHopSearches && cost < WarmStartCost())
             {
-                current[i] = _sampleMin[i] + (random.NextDouble() * (_sampleMax[i] - _sampleMin[i]));
-                current[i] = Math.Clamp(current[i], min[i], max[i]);
+                hopped++;
+                _hops.Propose(problem.State, current);
+            }
+
+            if (restart == 0)
+            {
+                _restartSeeds.Rank(problem);
+            }
+
+            if (_hops.Any)
+            {
+                _hops.Next(current);
+            }
+            else
+            {
+                _restartSeeds.Next(current);
             }
 
             cost = problem.Evaluate(current);
@@ -172,7 +204,7 @@ public sealed class IkSolver
         }
 
         best.CopyTo(solution);
-        return Result(target, reached, used);
+        return Result(target, reached, used, !reached && used >= totalBudget);
     }
 
     /// <summary>E of docs/algorithms.md for <paramref name="q"/> (weights from <see cref="Options"/>); for tests and tools.</summary>
@@ -197,7 +229,7 @@ public sealed class IkSolver
     // The cost of being about 1 mm off (PositionWeight per mm²): Newton from here is faster than a CCD sweep.
     private double WarmStartCost() => _problem.PositionWeight;
 
-    private IkResult Result(in IkTarget target, bool reached, int iterations)
+    private IkResult Result(in IkTarget target, bool reached, int iterations, bool atCeiling)
     {
         var problem = _problem;
         var reachedPosition = problem.State.ToolPosition;
@@ -216,7 +248,8 @@ public sealed class IkSolver
             double.IsFinite(positionError) ? positionError : double.MaxValue,
             problem.LargestAxisAngle(),
             force,
-            iterations);
+            iterations,
+            atCeiling);
     }
 
     private static double Finite(double value) =>
