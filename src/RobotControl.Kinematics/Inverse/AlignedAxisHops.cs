@@ -62,9 +62,12 @@ internal sealed class AlignedAxisHops
             var originI = state.JointOrigin(i);
             for (var j = i + 1; j < n && _count < MaxHops; j++)
             {
+                // On one line: within 2° of parallel, and j's origin off i's line by no more than that angle allows
+                // over the distance between them (plus a millimetre).
                 var axisJ = state.JointAxis(j);
+                var between = state.JointOrigin(j) - originI;
                 if (Vector3d.Cross(axisI, axisJ).Length > ParallelSine
-                    || Vector3d.Cross(state.JointOrigin(j) - originI, axisI).Length > LineDistanceMm)
+                    || Vector3d.Cross(between, axisI).Length > LineDistanceMm + (ParallelSine * between.Length))
                 {
                     continue;
                 }

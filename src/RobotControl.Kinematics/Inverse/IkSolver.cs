@@ -129,6 +129,7 @@ public sealed class IkSolver
         var bestCost = cost;
         var reached = false;
         var hopped = 0;
+        var ranked = false;
         _hops.Clear();
         for (var restart = 0; ; restart++)
         {
@@ -167,16 +168,12 @@ public sealed class IkSolver
                 break;
             }
 
-            // Stalled close to the target at a singular pose: hop along its free direction before trying far seeds.
-            if (!_hops.Any && hopped < MaxHopSearches && cost < WarmStartCost())
+            // Stalled at a singular pose (often with a joint on its limit): hop along its free direction before trying
+            // far seeds.
+            if (!_hops.Any && hopped < MaxHopSearches)
             {
                 hopped++;
                 _hops.Propose(problem.State, current);
-            }
-
-            if (restart == 0)
-            {
-                _restartSeeds.Rank(problem);
             }
 
             if (_hops.Any)
@@ -185,6 +182,13 @@ public sealed class IkSolver
             }
             else
             {
+                // Ranked once per solve, on the first seed taken (a solve the hops finish never pays for it).
+                if (!ranked)
+                {
+                    _restartSeeds.Rank(problem);
+                    ranked = true;
+                }
+
                 _restartSeeds.Next(current);
             }
 
