@@ -111,7 +111,7 @@ internal sealed class IkBenchCommand : IBenchCommand
             var document = new
             {
                 robot = robot.Name,
-                robot_file = Path.GetFullPath(options.Robot),
+                robot_file = options.Robot,
                 samples = options.Samples,
                 seed = options.Seed,
                 timing = $"wall time per solve (Stopwatch), fastest of {options.Repeat} passes per target for ours and KDL, 1 pass for the baseline; ours' cpu: thread CPU time (CLOCK_THREAD_CPUTIME_ID) per solve in passes of their own, least of {options.Repeat} per target (it includes two clock reads); KDL's mean_cpu_us: thread CPU time of one untimed pass / samples",

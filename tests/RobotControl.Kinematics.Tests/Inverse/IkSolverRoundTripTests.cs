@@ -19,8 +19,8 @@ public sealed class IkSolverRoundTripTests
     [Fact]
     public void A_chain_built_in_code_is_solved_for_full_poses()
     {
-        // The default budget is tuned for the two robots; a 6-DOF arm with tight limits has more local minima and
-        // needs more restarts (defaults: 97.6 % of 2,000 PUMA targets; with these: 99.9 %).
+        // The default budget is tuned for the two robots; a 6-DOF arm with tight limits has more local minima and is
+        // given more restarts and steps.
         var options = new IkOptions { MaxRestarts = 40, MaxIterations = 2000 };
         RoundTrips(IkTestData.Puma(), OrientationAxes.All, samples: 150, seed: 5, options);
     }
