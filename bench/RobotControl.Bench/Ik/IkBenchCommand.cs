@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Text.Json;
 using RobotControl.Definitions.Loading;
+using RobotControl.Definitions.Model;
 using RobotControl.Kinematics.Forward;
 using RobotControl.Kinematics.Inverse;
 
@@ -29,7 +30,17 @@ internal sealed class IkBenchCommand : IBenchCommand
 
     public int Run(string[] args)
     {
-        var options = IkBenchOptions.Parse(args);
+        IkBenchOptions? options;
+        try
+        {
+            options = IkBenchOptions.Parse(args);
+        }
+        catch (Exception e) when (e is ArgumentException or FormatException or OverflowException)
+        {
+            Console.Error.WriteLine($"ik: {e.Message}");
+            options = null;
+        }
+
         if (options is null)
         {
             Console.Error.WriteLine(Usage);
@@ -41,7 +52,17 @@ internal sealed class IkBenchCommand : IBenchCommand
             return IkReplay.Run(options.Replay, options.Repeat, JsonOptions);
         }
 
-        var robot = RobotLoader.Load(options.Robot);
+        RobotDefinition robot;
+        try
+        {
+            robot = RobotLoader.Load(options.Robot);
+        }
+        catch (RobotDataException e)
+        {
+            Console.Error.WriteLine(e.Message);
+            return 2;
+        }
+
         var chain = new KinematicChain(robot);
         var axes = options.Axes ?? (chain.JointCount >= 5 ? OrientationAxes.All : OrientationAxes.Z);
         var ikOptions = new IkOptions();

@@ -41,14 +41,28 @@ internal sealed record IkBenchOptions(
         for (var i = 0; i < args.Length; i++)
         {
             string Next() => i + 1 < args.Length ? args[++i] : throw new ArgumentException($"{args[i]} needs a value");
+            int Int()
+            {
+                var option = args[i];
+                var text = Next();
+                return int.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out var value)
+                    ? value
+                    : throw new ArgumentException($"{option}: '{text}' is not a whole number");
+            }
+
             switch (args[i])
             {
                 case "--robot": robot = Next(); break;
-                case "--samples": samples = int.Parse(Next(), CultureInfo.InvariantCulture); break;
-                case "--seed": seed = ulong.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--samples": samples = Int(); break;
+                case "--seed":
+                    var seedText = Next();
+                    seed = ulong.TryParse(seedText, NumberStyles.Integer, CultureInfo.InvariantCulture, out var parsed)
+                        ? parsed
+                        : throw new ArgumentException($"--seed: '{seedText}' is not a whole number");
+                    break;
                 case "--json": json = Next(); break;
-                case "--baseline-samples": baseline = int.Parse(Next(), CultureInfo.InvariantCulture); break;
-                case "--tracking-steps": tracking = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--baseline-samples": baseline = Int(); break;
+                case "--tracking-steps": tracking = Int(); break;
                 case "--axes":
                     axes = Next() switch
                     {
@@ -60,7 +74,7 @@ internal sealed record IkBenchOptions(
                     break;
                 case "--no-kdl": kdl = false; break;
                 case "--no-baseline": noBaseline = true; break;
-                case "--repeat": repeat = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--repeat": repeat = Int(); break;
                 case "--sets":
                     sets = Next().Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
                     if (sets.FirstOrDefault(x => x != "random" && !SpecialSetNames.Contains(x)) is { } unknown)
@@ -69,8 +83,8 @@ internal sealed record IkBenchOptions(
                     }
 
                     break;
-                case "--special-samples": special = int.Parse(Next(), CultureInfo.InvariantCulture); break;
-                case "--worst": worst = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                case "--special-samples": special = Int(); break;
+                case "--worst": worst = Int(); break;
                 case "--replay": replay = Next(); break;
                 default: return null;
             }

@@ -16,6 +16,20 @@ internal static class IkReplay
 {
     public static int Run(string file, int repeat, JsonSerializerOptions json)
     {
+        try
+        {
+            return Replay(file, repeat, json);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or JsonException
+            or KeyNotFoundException or InvalidOperationException or FormatException or ArgumentException or RobotDataException)
+        {
+            Console.Error.WriteLine($"{file}: {e.Message}");
+            return 2;
+        }
+    }
+
+    private static int Replay(string file, int repeat, JsonSerializerOptions json)
+    {
         using var document = JsonDocument.Parse(File.ReadAllText(file));
         var root = document.RootElement;
         if (!root.TryGetProperty("robot_file", out var robotFile) || !root.TryGetProperty("sets", out var sets))
