@@ -150,6 +150,7 @@ public sealed class IkSolver
             {
                 outcome = _descent.Run(problem, current, ref cost, ref budget, StepsPerRun, StallRatio);
             }
+
             if (outcome == BoundedLevenbergMarquardt.Outcome.Reached)
             {
                 current.CopyTo(best);
