@@ -94,8 +94,8 @@ public sealed class SessionRecorder : IDisposable
             _tap.Unbind();
             _stopping = true;
             _thread.Join();
-            var counts = _writer?.MessageCounts ?? new Dictionary<ushort, ulong>();
-            _summary = new RecordingSummary(Path, counts.Values.Aggregate(0UL, (a, c) => a + c), _ring.Dropped, _writer?.Position ?? 0, _writer?.ChunkCount ?? 0, StoppedReason);
+            var counts = _writer?.CountsByTopic ?? new Dictionary<string, ulong>();
+            _summary = new RecordingSummary(Path, counts, _ring.Dropped, _writer?.Position ?? 0, _writer?.ChunkCount ?? 0, StoppedReason);
         }
 
         return _summary;
@@ -194,13 +194,16 @@ public sealed class SessionRecorder : IDisposable
 
 /// <summary>What a recording wrote.</summary>
 /// <param name="Path">The file.</param>
-/// <param name="Messages">Messages written (every channel).</param>
+/// <param name="PerTopic">Messages written, per topic.</param>
 /// <param name="DroppedRows">Loop rows dropped because the writer fell behind.</param>
 /// <param name="Bytes">Bytes written.</param>
 /// <param name="Chunks">Chunks written.</param>
 /// <param name="Stopped">Why the recording stopped early, or null.</param>
-public sealed record RecordingSummary(string Path, ulong Messages, long DroppedRows, long Bytes, int Chunks, string? Stopped)
+public sealed record RecordingSummary(string Path, IReadOnlyDictionary<string, ulong> PerTopic, long DroppedRows, long Bytes, int Chunks, string? Stopped)
 {
+    /// <summary>Messages written (every topic).</summary>
+    public ulong Messages => PerTopic.Values.Aggregate(0UL, (a, c) => a + c);
+
     /// <summary>One line for the command line.</summary>
     public override string ToString() => Stopped ?? string.Create(CultureInfo.InvariantCulture, $"recording: {Path}: {Messages} messages in {Chunks} chunks, {Bytes / 1e6:F1} MB, {DroppedRows} loop rows dropped");
 }

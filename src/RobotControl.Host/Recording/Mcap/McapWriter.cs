@@ -34,7 +34,7 @@ public sealed class McapWriter : IDisposable
     /// <param name="library">The header's library name.</param>
     /// <param name="chunkBytes">A chunk is closed once its records reach this size.</param>
     /// <param name="chunkSpan">A chunk is closed once its messages span this much log time (bounds what a kill loses).</param>
-    public McapWriter(Stream stream, string profile, string library, int chunkBytes = 1 << 20, TimeSpan? chunkSpan = null)
+    public McapWriter(Stream stream, string profile, string library, int chunkBytes = 512 * 1024, TimeSpan? chunkSpan = null)
     {
         ArgumentNullException.ThrowIfNull(stream);
         ArgumentNullException.ThrowIfNull(profile);
@@ -54,6 +54,9 @@ public sealed class McapWriter : IDisposable
 
     /// <summary>Messages written so far, per channel.</summary>
     public IReadOnlyDictionary<ushort, ulong> MessageCounts => _summary.MessageCounts;
+
+    /// <summary>Messages written so far, per topic.</summary>
+    public IReadOnlyDictionary<string, ulong> CountsByTopic => _summary.Channels.ToDictionary(c => c.Topic, c => _summary.MessageCounts[c.Id]);
 
     /// <summary>Chunks written so far.</summary>
     public int ChunkCount => _summary.Chunks.Count;
