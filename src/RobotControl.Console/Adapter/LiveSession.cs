@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using RobotControl.Host.Recording;
 using RobotControl.Host.Session;
 using RobotControl.Kinematics.Urdf;
 using RobotControl.Plugins.Sdk;
@@ -37,6 +38,7 @@ public sealed class LiveSession : IConsoleSession
     private readonly SessionEvents _events;
     private readonly SessionThreadState _sessionThread = new();
     private readonly StatusPublisher _publisher;
+    private readonly SessionRecorder? _mcap;
     private readonly ModuleCommands _modules;
     private readonly MotorCommands _motors;
     private readonly RunLevelCommands _runLevel;
@@ -81,7 +83,9 @@ public sealed class LiveSession : IConsoleSession
             throw;
         }
         _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
-        slot.Target = _recorder;
+        var tap = new RecordingTap(_session.Node, _session.Robot, _recorder); // the MCAP recording's side on the loop thread, then the plots' ring
+        slot.Target = tap;
+        _mcap = options.Record is { } record ? SessionRecorder.Start(_session, tap, record) : null;
         Transport = options.Virtual ? $"virtual:{Path.GetFileName(robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;
         Model = BuildModel(robot);
         var modules = new SessionModules(_events);
@@ -195,6 +199,11 @@ public sealed class LiveSession : IConsoleSession
             _stop.Cancel();
             _thread.Join();
             var stop = _session.Stop(); // loop and bus thread off, motors off through the robot's state machine (or written off directly), every module read back
+            if (_mcap?.Stop() is { } recording)
+            {
+                _events.Add("session", recording.ToString()); // after the motors are off and read back
+            }
+
             _publisher.Join();
             var last = _publisher.BuildStatus();
             _events.Add("session", $"stopped: {stop.Summary}");
@@ -338,7 +347,7 @@ public sealed class LiveSession : IConsoleSession
     /// <summary>The loop's observer, given to the session layer before the recorder (which needs the loaded graph) exists.</summary>
     private sealed class ObserverSlot : ITickObserver
     {
-        public RingRecorder? Target { get; set; }
+        public ITickObserver? Target { get; set; }
 
         public void AfterTick(in TickContext context) => Target?.AfterTick(in context);
     }

@@ -36,4 +36,7 @@ public sealed record LiveSessionOptions
 
     /// <summary>Wraps the host's end of the bus (benchmarks: timestamp frames); passed to the session layer (<see cref="Host.Session.SessionOptions.WrapLink"/>).</summary>
     public Func<RobotControl.Bus.Transports.IByteLink, TimeProvider, RobotControl.Bus.Transports.IByteLink>? WrapLink { get; init; }
+
+    /// <summary>Record the session to an MCAP file from its start to its stop (<c>--record</c>; docs/recording.md); null: no recording.</summary>
+    public Host.Recording.RecordingOptions? Record { get; init; }
 }

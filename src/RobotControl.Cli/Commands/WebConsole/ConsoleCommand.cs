@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using RobotControl.Cli.Commands.Recording;
 using RobotControl.Cli.Commands.Run;
 using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
@@ -41,6 +42,7 @@ internal sealed class ConsoleCommand : ICliCommand
         var kiosk = new Option<bool>("--kiosk") { Description = "With --open: full screen, no browser controls (Chromium's --kiosk)" };
         var rtPriority = CliOption.Number("--rt-priority", "Real time, on a real bus: run the session's bus thread and the loop thread with SCHED_FIFO at this priority (1..99; 0: normal scheduling)", 0, 99, 0);
         var cpu = CliOption.OptionalNumber<int>("--cpu", "Real time, on a real bus: pin the bus and loop threads to this CPU", 0, 1023);
+        var record = RecordOptions.Create();
         var report = CliOption.OutputFile("--report", "At the stop, write the session's report (JSON: last status, the stop's read-back, events, timings) to this file (checked before the session starts)");
         var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status, graph editor and the surgeon's view of a running session.");
         command.Arguments.Add(graph);
@@ -48,6 +50,8 @@ internal sealed class ConsoleCommand : ICliCommand
         {
             command.Options.Add(o);
         }
+
+        record.AddTo(command);
 
         command.SetAction(parse => Run(
             parse.GetValue(graph)!.FullName,
@@ -57,7 +61,7 @@ internal sealed class ConsoleCommand : ICliCommand
             parse.GetValue(open),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
-            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk), parse.GetValue(report)?.FullName, new RunExtras(null, false, parse.GetValue(rtPriority), parse.GetValue(cpu))),
+            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk), parse.GetValue(report)?.FullName, new RunExtras(null, false, parse.GetValue(rtPriority), parse.GetValue(cpu)) { Record = record.Value(parse) }),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -93,7 +97,8 @@ internal sealed class ConsoleCommand : ICliCommand
 
             extras.CheckPage();
             options = new LiveSessionOptions { GraphPath = graphPath, Catalog = ShippedPlugins.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed, Threads = extras.Scheduling.Threads() };
-            session = new LiveSession(options with { Inject = FaultInjection.Parse(extras.Inject) }); // faults for the first session only, not for graphs started from the editor
+            // faults and the recording for the first session only, not for graphs started from the editor
+            session = new LiveSession(options with { Inject = FaultInjection.Parse(extras.Inject), Record = extras.Scheduling.Record?.Options(error) });
         }
         catch (GraphException ex)
         {
