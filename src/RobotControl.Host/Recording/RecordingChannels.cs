@@ -16,14 +16,6 @@ namespace RobotControl.Host.Recording;
 /// </summary>
 internal sealed class RecordingChannels : IDisposable
 {
-    public const string SignalsTopic = "/graph/signals";
-    public const string TransformsTopic = "/tf";
-    public const string RunLevelTopic = "/safety/run_level";
-    public const string TripsTopic = "/safety/trips";
-    public const string OperatorTopic = "/operator/commands";
-    public const string BusTopic = "/bus/statistics";
-    public const string ModulesTopic = "/modules/status";
-
     private readonly McapWriter _writer;
     private readonly RecordingLayout _layout;
     private readonly ArrayBufferWriter<byte> _buffer = new(1 << 16);
@@ -47,16 +39,16 @@ internal sealed class RecordingChannels : IDisposable
         _jointNames = [.. robot.Joints.Select(j => j.Name)];
         _actuatorNames = [.. robot.Actuators.Select(a => a.Name)];
         _signalNames = [.. layout.Outputs.Select(RecordingSchemas.Instance)];
-        _signals = Channel(SignalsTopic, "robotcontrol.GraphSignals", RecordingSchemas.Signals(layout.Outputs));
+        _signals = Channel(RecordingTopics.Signals, "robotcontrol.GraphSignals", RecordingSchemas.Signals(layout.Outputs));
         _devices = [.. layout.Devices.Select(d => Channel($"/devices/{d.Name}", "robotcontrol.DeviceSignals", RecordingSchemas.Device(d.ReadingNames, d.SentBackNames)))];
         var jointSchema = writer.AddSchema("robotcontrol.ArmJoints", RecordingSchemas.Encoding, RecordingSchemas.Joints(_jointNames, _actuatorNames));
-        _joints = [.. layout.Arms.Select(a => writer.AddChannel(jointSchema, $"/arms/{a.Name}/joints", "json"))];
-        _transforms = Channel(TransformsTopic, "foxglove.FrameTransforms", RecordingSchemas.FrameTransforms());
-        RunLevel = Channel(RunLevelTopic, "robotcontrol.RunLevelTransition", RecordingSchemas.RunLevel());
-        Trips = Channel(TripsTopic, "robotcontrol.SafetyTrip", RecordingSchemas.Trip());
-        Operator = Channel(OperatorTopic, "robotcontrol.OperatorCommand", RecordingSchemas.OperatorCommand());
-        Bus = Channel(BusTopic, "robotcontrol.BusStatistics", RecordingSchemas.Bus());
-        Modules = Channel(ModulesTopic, "robotcontrol.ModuleStatus", RecordingSchemas.Modules(moduleIds));
+        _joints = [.. layout.Arms.Select(a => writer.AddChannel(jointSchema, RecordingTopics.Joints(a.Name), "json"))];
+        _transforms = Channel(RecordingTopics.Transforms, "foxglove.FrameTransforms", RecordingSchemas.FrameTransforms());
+        RunLevel = Channel(RecordingTopics.RunLevel, "robotcontrol.RunLevelTransition", RecordingSchemas.RunLevel());
+        Trips = Channel(RecordingTopics.Trips, "robotcontrol.SafetyTrip", RecordingSchemas.Trip());
+        Operator = Channel(RecordingTopics.Operator, "robotcontrol.OperatorCommand", RecordingSchemas.OperatorCommand());
+        Bus = Channel(RecordingTopics.Bus, "robotcontrol.BusStatistics", RecordingSchemas.Bus());
+        Modules = Channel(RecordingTopics.Modules, "robotcontrol.ModuleStatus", RecordingSchemas.Modules(moduleIds));
         var chain = new KinematicChain(robot);
         _measured = chain.CreateState();
         _commanded = chain.CreateState();

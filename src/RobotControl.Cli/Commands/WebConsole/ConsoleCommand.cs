@@ -26,7 +26,8 @@ internal sealed class ConsoleCommand : ICliCommand
     /// <inheritdoc />
     public Command Build()
     {
-        var graph = new Argument<FileInfo>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json" };
+        var graph = new Argument<FileInfo?>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json (none with --replay)", Arity = ArgumentArity.ZeroOrOne };
+        var replay = new Option<FileInfo?>("--replay") { Description = "Serve the pages from a recording (robotctl run --record) instead of a robot: play, pause, 0.25x-4x, seek (docs/recording.md)" };
         var isVirtual = new Option<bool>("--virtual") { Description = "Run the virtual robot (real firmware, simulated motors) in real time" };
         var transport = new Option<string?>("--transport") { Description = "Bus transport instead of the graph's: serial:/dev/ttyUSB0?baud=1000000 | usb:0403:6001 | tcp:host:port" };
         var bind = new Option<string>("--bind") { Description = "Address and port to serve on (off this host: give --https-cert)", DefaultValueFactory = _ => "127.0.0.1:5080" };
@@ -52,9 +53,11 @@ internal sealed class ConsoleCommand : ICliCommand
         }
 
         record.AddTo(command);
-
-        command.SetAction(parse => Run(
-            parse.GetValue(graph)!.FullName,
+        command.Options.Add(replay);
+        command.SetAction(parse => parse.GetValue(replay) is { } file
+            ? ConsoleReplay.Run(file.FullName, parse.GetValue(graph) is null, new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName), parse.InvocationConfiguration.Output, parse.InvocationConfiguration.Error)
+            : Run(
+            parse.GetValue(graph)?.FullName,
             parse.GetValue(isVirtual),
             parse.GetValue(transport),
             new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName),
@@ -67,8 +70,14 @@ internal sealed class ConsoleCommand : ICliCommand
         return command;
     }
 
-    private static int Run(string graphPath, bool isVirtual, string? transport, ConsoleAccess access, bool open, string? pluginsFolder, int seed, ConsoleExtras extras, TextWriter output, TextWriter error)
+    private static int Run(string? graphPath, bool isVirtual, string? transport, ConsoleAccess access, bool open, string? pluginsFolder, int seed, ConsoleExtras extras, TextWriter output, TextWriter error)
     {
+        if (graphPath is null)
+        {
+            error.WriteLine("console: give a graph file, e.g. graphs/teleop-lb.json (or --replay file.mcap)");
+            return 2;
+        }
+
         if (isVirtual && transport is not null)
         {
             error.WriteLine("give --virtual or --transport, not both");
@@ -156,10 +165,10 @@ internal sealed class ConsoleCommand : ICliCommand
     }
 
     /// <summary>How long the pages' server may take to close its connections once the motors are off.</summary>
-    private static readonly TimeSpan ServerCloseWait = TimeSpan.FromSeconds(2);
+    internal static readonly TimeSpan ServerCloseWait = TimeSpan.FromSeconds(2);
 
     /// <summary>Closes the pages' server, waiting at most <see cref="ServerCloseWait"/> (a request that hangs does not hold the report).</summary>
-    private static void CloseServer(ConsoleServer server, TextWriter error)
+    internal static void CloseServer(ConsoleServer server, TextWriter error)
     {
         if (!server.DisposeAsync().AsTask().Wait(ServerCloseWait))
         {
