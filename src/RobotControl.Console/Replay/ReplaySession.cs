@@ -103,7 +103,7 @@ public sealed class ReplaySession : IConsoleSession
     public void Seek(double seconds) => Control(() =>
     {
         _position = Math.Clamp(double.IsFinite(seconds) ? seconds : 0, 0, DurationSeconds);
-        _next = Math.Max(0, _data.Times.BinarySearch(_position) is var i && i >= 0 ? i : ~i);
+        _next = Math.Max(0, _data.Times.BinarySearch(_position) is var i && i >= 0 ? i : ~i - 1); // the row shown at the new position comes first
     });
 
     /// <summary>Moves the playback clock to now and appends the rows up to the position to the ring (the timer's work; tests call it).</summary>
