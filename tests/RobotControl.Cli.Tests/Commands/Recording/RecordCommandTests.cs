@@ -110,4 +110,26 @@ public sealed class RecordCommandTests
         Assert.Equal(2, code);
         Assert.StartsWith("--topics: run.mcap has no topic /nope (it has /graph/signals, ", error, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public void Replaying_a_file_that_is_not_mcap_or_is_missing_is_one_line_and_nothing_is_served()
+    {
+        var dir = Directory.CreateTempSubdirectory("rc-rec-").FullName;
+        var notes = Path.Combine(dir, "notes.txt");
+        File.WriteAllText(notes, "not a recording");
+
+        var (code, output, error) = Cli.Run("console", "--replay", notes);
+        Assert.Equal(2, code);
+        Assert.Equal($"--replay {notes}: not an MCAP file (it does not start with the MCAP magic)" + Environment.NewLine, error);
+        Assert.DoesNotContain("http", output, StringComparison.Ordinal);
+
+        var missing = Path.Combine(dir, "missing.mcap");
+        (code, _, error) = Cli.Run("console", "--replay", missing);
+        Assert.Equal(2, code);
+        Assert.Equal($"--replay {missing}: no such file" + Environment.NewLine, error);
+
+        (code, _, error) = Cli.Run("console", RunProcess.Graph, "--replay", notes);
+        Assert.Equal(2, code);
+        Assert.Equal("console: give a graph file or --replay, not both" + Environment.NewLine, error);
+    }
 }
