@@ -38,7 +38,7 @@ public sealed class LiveSession : IConsoleSession
     private readonly SessionEvents _events;
     private readonly SessionThreadState _sessionThread = new();
     private readonly StatusPublisher _publisher;
-    private readonly SessionRecorder? _mcap;
+    private readonly ConsoleRecording _mcap;
     private readonly ModuleCommands _modules;
     private readonly MotorCommands _motors;
     private readonly RunLevelCommands _runLevel;
@@ -85,7 +85,17 @@ public sealed class LiveSession : IConsoleSession
         _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
         var tap = new RecordingTap(_session.Node, _session.Robot, _recorder); // the MCAP recording's side on the loop thread, then the plots' ring
         slot.Target = tap;
-        _mcap = options.Record is { } record ? SessionRecorder.Start(_session, tap, record) : null;
+        _mcap = new ConsoleRecording(_session, tap, _events, options.Record, options.RecordFolder);
+        try
+        {
+            _mcap.StartFirst();
+        }
+        catch (IOException)
+        {
+            _session.Dispose();
+            throw;
+        }
+
         Transport = options.Virtual ? $"virtual:{Path.GetFileName(robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;
         Model = BuildModel(robot);
         var modules = new SessionModules(_events);
@@ -110,6 +120,12 @@ public sealed class LiveSession : IConsoleSession
 
     /// <inheritdoc />
     public SessionStatus Status => _publisher.Status;
+
+    /// <inheritdoc />
+    public string? RecordingFile => _mcap.File;
+
+    /// <inheritdoc />
+    public Task<CommandResult> RecordAsync(bool on) => Task.Run(() => _mcap.Record(on)); // file I/O off the caller's thread
 
     /// <inheritdoc />
     public IReadOnlyList<ControllerView> Controllers => _publisher.Controllers;
@@ -199,10 +215,7 @@ public sealed class LiveSession : IConsoleSession
             _stop.Cancel();
             _thread.Join();
             var stop = _session.Stop(); // loop and bus thread off, motors off through the robot's state machine (or written off directly), every module read back
-            if (_mcap?.Stop() is { } recording)
-            {
-                _events.Add("session", recording.ToString()); // after the motors are off and read back
-            }
+            _mcap.Stop(); // after the motors are off and read back; the event log says what was written
 
             _publisher.Join();
             var last = _publisher.BuildStatus();

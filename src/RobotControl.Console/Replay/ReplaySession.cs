@@ -136,6 +136,12 @@ public sealed class ReplaySession : IConsoleSession
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
 
     /// <inheritdoc />
+    public string? RecordingFile => null;
+
+    /// <inheritdoc />
+    public Task<CommandResult> RecordAsync(bool on) => Refused();
+
+    /// <inheritdoc />
     public Task<CommandResult> DiscoverAsync() => Refused();
 
     /// <inheritdoc />
