@@ -56,7 +56,11 @@ public sealed class ConsoleFixture : IAsyncLifetime
         Catalog = Catalog(),
         Virtual = true,
         Inject = inject ?? FaultInjection.None,
+        RecordFolder = RecordFolder,
     });
+
+    /// <summary>Where the record button's files go in the tests (a fresh temporary folder per test run).</summary>
+    public static string RecordFolder { get; } = Directory.CreateTempSubdirectory("rc-console-recordings-").FullName;
 
     public async Task InitializeAsync()
     {

@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using RobotControl.Host.Recording;
 using RobotControl.Host.Session;
 using RobotControl.Kinematics.Urdf;
 using RobotControl.Plugins.Sdk;
@@ -37,6 +38,7 @@ public sealed class LiveSession : IConsoleSession
     private readonly SessionEvents _events;
     private readonly SessionThreadState _sessionThread = new();
     private readonly StatusPublisher _publisher;
+    private readonly ConsoleRecording _mcap;
     private readonly ModuleCommands _modules;
     private readonly MotorCommands _motors;
     private readonly RunLevelCommands _runLevel;
@@ -81,7 +83,19 @@ public sealed class LiveSession : IConsoleSession
             throw;
         }
         _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
-        slot.Target = _recorder;
+        var tap = new RecordingTap(_session.Node, _session.Robot, _recorder); // the MCAP recording's side on the loop thread, then the plots' ring
+        slot.Target = tap;
+        _mcap = new ConsoleRecording(_session, tap, _events, options.Record, options.RecordFolder);
+        try
+        {
+            _mcap.StartFirst();
+        }
+        catch (IOException)
+        {
+            _session.Dispose();
+            throw;
+        }
+
         Transport = options.Virtual ? $"virtual:{Path.GetFileName(robot.SourceFile)}" : options.Transport ?? _session.Graph.Document.Transport;
         Model = BuildModel(robot);
         var modules = new SessionModules(_events);
@@ -106,6 +120,12 @@ public sealed class LiveSession : IConsoleSession
 
     /// <inheritdoc />
     public SessionStatus Status => _publisher.Status;
+
+    /// <inheritdoc />
+    public string? RecordingFile => _mcap.File;
+
+    /// <inheritdoc />
+    public Task<CommandResult> RecordAsync(bool on) => Task.Run(() => _mcap.Record(on)); // file I/O off the caller's thread
 
     /// <inheritdoc />
     public IReadOnlyList<ControllerView> Controllers => _publisher.Controllers;
@@ -195,6 +215,8 @@ public sealed class LiveSession : IConsoleSession
             _stop.Cancel();
             _thread.Join();
             var stop = _session.Stop(); // loop and bus thread off, motors off through the robot's state machine (or written off directly), every module read back
+            _mcap.Stop(); // after the motors are off and read back; the event log says what was written
+
             _publisher.Join();
             var last = _publisher.BuildStatus();
             _events.Add("session", $"stopped: {stop.Summary}");
@@ -338,7 +360,7 @@ public sealed class LiveSession : IConsoleSession
     /// <summary>The loop's observer, given to the session layer before the recorder (which needs the loaded graph) exists.</summary>
     private sealed class ObserverSlot : ITickObserver
     {
-        public RingRecorder? Target { get; set; }
+        public ITickObserver? Target { get; set; }
 
         public void AfterTick(in TickContext context) => Target?.AfterTick(in context);
     }

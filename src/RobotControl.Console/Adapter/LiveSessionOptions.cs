@@ -36,4 +36,10 @@ public sealed record LiveSessionOptions
 
     /// <summary>Wraps the host's end of the bus (benchmarks: timestamp frames); passed to the session layer (<see cref="Host.Session.SessionOptions.WrapLink"/>).</summary>
     public Func<RobotControl.Bus.Transports.IByteLink, TimeProvider, RobotControl.Bus.Transports.IByteLink>? WrapLink { get; init; }
+
+    /// <summary>Record the session to an MCAP file from its start to its stop (<c>--record</c>; docs/recording.md); null: no recording.</summary>
+    public Host.Recording.RecordingOptions? Record { get; init; }
+
+    /// <summary>Where the record button's files go (null: the <see cref="Record"/> file's folder, else <c>recordings</c> in the working directory).</summary>
+    public string? RecordFolder { get; init; }
 }

@@ -39,6 +39,10 @@ internal sealed class StoppedSession : IConsoleSession
 
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
 
+    public string? RecordingFile => null;
+
+    public Task<CommandResult> RecordAsync(bool on) => Refused();
+
     public IReadOnlyList<EventEntry> EventsAfter(long after) => [.. _events.Where(e => e.Sequence > after)];
 
     /// <summary>Nothing runs: the motors of the session that ran went off when it closed.</summary>

@@ -46,6 +46,12 @@ public sealed class SwitchableSession : IConsoleSession
     /// <inheritdoc />
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => _current.SetScaleAsync(arm, ratio);
 
+    /// <inheritdoc />
+    public string? RecordingFile => _current.RecordingFile;
+
+    /// <inheritdoc />
+    public Task<CommandResult> RecordAsync(bool on) => _current.RecordAsync(on);
+
     /// <summary>Makes <paramref name="next"/> current and returns the one it replaces (the caller disposes it).</summary>
     public IConsoleSession Replace(IConsoleSession next)
     {

@@ -45,6 +45,10 @@ internal sealed record SetpointBody(double? Deg);
 /// <param name="Down">True: pedal down (the robot moves); false: up (it holds).</param>
 internal sealed record PedalBody(bool? Down);
 
+/// <summary>The record button, <c>{"on": true}</c>: start (true) or stop recording the session.</summary>
+/// <param name="On">True: start a recording; false: stop it.</param>
+internal sealed record RecordBody(bool? On);
+
 /// <summary>Torque, <c>{"on": true}</c>.</summary>
 /// <param name="On">True: drive the motors.</param>
 internal sealed record TorqueBody(bool? On);

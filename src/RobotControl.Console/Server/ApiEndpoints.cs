@@ -25,6 +25,7 @@ internal static class ApiEndpoints
         api.MapGet("/events", (long? after) => Json(session.EventsAfter(after ?? 0)));
         api.MapGet("/timings", () => Json(session.Timings));
         api.MapGet("/model", () => Json(session.Model));
+        api.MapGet("/recording", () => Json(new { session.RecordingFile }));
         api.MapGet("/model/arm.urdf", () => Results.Text(session.Model.Urdf, "application/xml"));
 
         api.MapPost("/operator", (HttpContext http) =>
@@ -62,6 +63,11 @@ internal static class ApiEndpoints
         {
             var (body, problem) = await ApiBodies.Read<PedalBody>(request, "pedal").ConfigureAwait(false);
             return body?.Down is { } down ? Result(await session.PedalAsync(down).ConfigureAwait(false)) : Error(StatusCodes.Status400BadRequest, problem ?? "pedal: give {\"down\": true|false}");
+        });
+        actions.MapPost("/recording", async (HttpRequest request) =>
+        {
+            var (body, problem) = await ApiBodies.Read<RecordBody>(request, "recording").ConfigureAwait(false);
+            return body?.On is { } on ? Result(await session.RecordAsync(on).ConfigureAwait(false)) : Error(StatusCodes.Status400BadRequest, problem ?? "recording: give {\"on\": true|false}");
         });
         actions.MapPost("/home", async () => Result(await session.HomeAsync(null).ConfigureAwait(false)));
         actions.MapPost("/faults/clear", async () => Result(await session.ClearFaultsAsync().ConfigureAwait(false)));

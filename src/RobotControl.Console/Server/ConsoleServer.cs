@@ -87,6 +87,10 @@ public sealed class ConsoleServer : IAsyncDisposable
         app.UseRateLimiter();
         ApiEndpoints.Map(app, session, server.Operator);
         StreamEndpoint.Map(app, session, options.MaxStreams, options.StreamQueueFrames);
+        if (session is Replay.ReplaySession replay)
+        {
+            Replay.ReplayEndpoints.Map(app, replay);
+        }
         if (options.Editor is not null)
         {
             GraphEndpoints.Map(app, options.Editor, server.Operator);

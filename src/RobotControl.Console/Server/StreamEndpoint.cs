@@ -126,7 +126,7 @@ internal static class StreamEndpoint
                     var unknown = wanted.Where(n => ring.IndexOf(n) < 0).ToList();
                     var rate = root.TryGetProperty("rateHz", out var r) && r.TryGetDouble(out var hz) && hz > 0 ? Math.Min(hz, MaxRateHz) : MaxRateHz;
                     var known = wanted.Where(n => ring.IndexOf(n) >= 0).ToList();
-                    Interlocked.Exchange(ref _cursor, ring.Written);
+                    Interlocked.Exchange(ref _cursor, Math.Max(0, ring.Written - 1)); // the latest row first: a still session (a paused replay) shows its state at once
                     var id = root.TryGetProperty("id", out var given) && given.TryGetInt64(out var n) ? n : 0;
                     _subscription = new Subscription(known, [.. known.Select(ring.IndexOf)], 1 / rate, id);
                     await Send(new { Subscribed = known, Unknown = unknown, RateHz = rate, Id = id }, token).ConfigureAwait(false);

@@ -85,6 +85,12 @@ public interface IConsoleSession : IDisposable
     /// </summary>
     void StopMotorsNow(string reason);
 
+    /// <summary>The MCAP file the session is being recorded to now (docs/recording.md), or null.</summary>
+    string? RecordingFile { get; }
+
+    /// <summary>Starts recording the session to a new file in its recordings folder, or stops the recording (the record button).</summary>
+    Task<CommandResult> RecordAsync(bool on);
+
     /// <summary>
     /// Ends the session: the loop stops, the motors go off and every module is read back. Once closed, it stays closed
     /// and returns the same end; <see cref="IDisposable.Dispose"/> closes it too.

@@ -2,6 +2,7 @@ using System.Globalization;
 using RobotControl.Bus.Transports;
 using RobotControl.Definitions.Model;
 using RobotControl.Host.Realtime;
+using RobotControl.Host.Recording;
 using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Robot.Bus;
@@ -45,9 +46,11 @@ public static class HeadlessRun
     private static RunReport RunVirtual(RunOptions options, PluginCatalog catalog, Action<RunProgress>? progress, VirtualRunHooks? hooks)
     {
         TrackingMeter? meter = null;
+        RecordingTap? tap = null;
         using var session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
+            new SessionOptions { GraphPath = options.GraphPath, Seed = options.Seed, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, options, out meter, out tap) },
             catalog);
+        using var recorder = Record(session, tap, options);
         var bus = session.Robot;
         using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
         var sim = session.Simulation!;
@@ -72,14 +75,14 @@ public static class HeadlessRun
 
         var safetyFaults = new SafetyFaultSchedule(options.Inject.TimedFaults, sim, bus, session.Graph, begin, clock.TimestampFrequency);
         var around = hooks?.AroundTick;
-        PressPedal(session, begin, faults);
+        PressPedal(session, begin, faults, recorder);
         var surgeon = new ReEngagement(session.Supervisor, clock, options.ReEngageAfter, ReEngagement.PedalWired(session.Graph));
         var loop = session.Loop;
         var ticks = (long)Math.Round(options.Duration.TotalSeconds * loop.RateHz);
         var progressEvery = Math.Max(1, (long)Math.Round(options.ProgressInterval.TotalSeconds * loop.RateHz));
         var reported = 0L;
         var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
-        using var operatorStop = OperatorStop(options, session.Supervisor);
+        using var operatorStop = OperatorStop(options, session.Supervisor, recorder);
         using var motorsFirst = MotorsOffAtStop(options, session);
         session.RunVirtual(
             ticks,
@@ -111,17 +114,25 @@ public static class HeadlessRun
             stopper.ShouldStop);
         hooks?.AfterRun?.Invoke(session);
         var elapsed = clock.GetElapsedTime(begin);
-        var check = session.Stop();
-        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults, surgeon.Presses);
+        var check = session.Stop(); // motors off and read back first; the recording's end after
+        return Finish(stopper, check, loop, meter!, elapsed, session, events, faults, surgeon.Presses) with { Recording = recorder?.Stop() };
     }
+
+    /// <summary>Starts the session's recording (<see cref="RunOptions.Record"/>) on the tap built with the loop; null without one.</summary>
+    private static SessionRecorder? Record(RobotSession session, RecordingTap? tap, RunOptions options) =>
+        options.Record is { } record && tap is not null ? SessionRecorder.Start(session, tap, record) : null;
 
     /// <summary>A stop request (Ctrl+C, SIGTERM) switches the motors off at once, from the signal's own thread: the rest of the stop follows (<see cref="RobotSession.StopMotorsNow"/>).</summary>
     private static CancellationTokenRegistration MotorsOffAtStop(RunOptions options, RobotSession session) =>
         options.Stop.Register(() => session.StopMotorsNow("stop requested: motors off"));
 
     /// <summary>The command line's E-STOP (<see cref="RunOptions.EmergencyStop"/>) goes to the supervisor, as any operator E-STOP.</summary>
-    private static CancellationTokenRegistration OperatorStop(RunOptions options, SafetySupervisor supervisor) =>
-        options.EmergencyStop.Register(() => supervisor.EmergencyStop("cli", "E-STOP from the command line"));
+    private static CancellationTokenRegistration OperatorStop(RunOptions options, SafetySupervisor supervisor, SessionRecorder? recorder) =>
+        options.EmergencyStop.Register(() =>
+        {
+            supervisor.EmergencyStop("cli", "E-STOP from the command line");
+            recorder?.OperatorCommand("cli", "E-STOP");
+        });
 
     /// <summary>
     /// Without a pedal wired to the robot node (the shipped graphs), the harness is the operator and holds the pedal
@@ -130,7 +141,7 @@ public static class HeadlessRun
     /// on: after a trip that came first (a stalled machine at start) at E_STOP, holding; at PEDAL_UP (a module silent for
     /// a moment) the harness presses again as after a soft trip.
     /// </summary>
-    private static void PressPedal(RobotSession session, long begin, List<FaultEntry> faults)
+    private static void PressPedal(RobotSession session, long begin, List<FaultEntry> faults, SessionRecorder? recorder)
     {
         session.Supervisor.SetOrigin(begin);
         if (ReEngagement.PedalWired(session.Graph))
@@ -140,6 +151,7 @@ public static class HeadlessRun
 
         try
         {
+            recorder?.OperatorCommand("harness", "pedal down");
             session.Supervisor.PedalDown("harness");
         }
         catch (Exception ex) when (ex is InvalidOperationException or IOException)
@@ -161,9 +173,11 @@ public static class HeadlessRun
         }
 
         TrackingMeter? meter = null;
+        RecordingTap? tap = null;
         using var session = RobotSession.Open(
-            new SessionOptions { GraphPath = options.GraphPath, Virtual = false, Transport = options.Transport, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, out meter) },
+            new SessionOptions { GraphPath = options.GraphPath, Virtual = false, Transport = options.Transport, SettingOverrides = options.SettingOverrides, WrapLink = hooks?.WrapLink, Observer = (node, port) => Meter(node, port, options, out meter, out tap) },
             catalog);
+        using var recorder = Record(session, tap, options);
         var bus = session.Robot;
         using var events = bus.Events.Subscribe(fromStart: true); // the run's report lists every event since discovery
         var loop = session.Loop;
@@ -171,7 +185,7 @@ public static class HeadlessRun
         var faults = new List<FaultEntry>();
         DrainEvents(events, TimeSpan.Zero, faults); // discovery problems, once, at time 0
         var stopper = new FaultStop(bus, options.ContinueOnFault, options.Stop, session.Supervisor);
-        using var operatorStop = OperatorStop(options, session.Supervisor);
+        using var operatorStop = OperatorStop(options, session.Supervisor, recorder);
         using var motorsFirst = MotorsOffAtStop(options, session);
         var nextProgress = options.ProgressInterval;
         StopCheck check;
@@ -181,7 +195,7 @@ public static class HeadlessRun
         using var gcRestore = new RestoreOnDispose(() => System.Runtime.GCSettings.LatencyMode = gcBefore);
         session.StartRealtime(threads); // warm-up, homing, motors on: the run's time starts when the threads do
         var begin = clock.GetTimestamp();
-        PressPedal(session, begin, faults);
+        PressPedal(session, begin, faults, recorder);
         var surgeon = new ReEngagement(session.Supervisor, clock, options.ReEngageAfter, ReEngagement.PedalWired(session.Graph));
         try
         {
@@ -215,6 +229,7 @@ public static class HeadlessRun
         {
             Scheduling = $"{threads.Outcome}; GC {options.RealtimeGcLatency}{(session.CpuLatency is { } latency ? "; " + latency : "")}",
             Compiled = new CompiledAfterStart(loop.MethodsCompiledAfterFirstTick, loop.CompileTimeAfterFirstTick, bus.MethodsCompiledAfterFirstCycle, bus.CompileTimeAfterFirstCycle),
+            Recording = recorder?.Stop(),
         };
     }
 
@@ -235,7 +250,12 @@ public static class HeadlessRun
         return Report(loop, meter, elapsed, session, faults, reEngagements) with { Interrupted = stopper.Interrupted, StoppedOnFault = stopper.Fault, Stop = check };
     }
 
-    private static TrackingMeter Meter(RobotNode node, IRobotPort port, out TrackingMeter meter) => meter = new TrackingMeter(node, port);
+    /// <summary>The loop's observers: the tracking meter, then the recording's tap when the run records.</summary>
+    private static TrackingMeter Meter(RobotNode node, IRobotPort port, RunOptions options, out TrackingMeter meter, out RecordingTap? tap)
+    {
+        tap = options.Record is null ? null : new RecordingTap(node, port);
+        return meter = new TrackingMeter(node, port) { Next = tap };
+    }
 
     private static RunProgress Progress(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, TimeSpan duration, int faults, string robotFaults) =>
         new(elapsed, duration, loop.TickCount, loop.Statistics.DeadlineMisses, meter.RmsMm, meter.LastErrorMm.Max(), faults, robotFaults);

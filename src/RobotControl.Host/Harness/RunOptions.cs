@@ -59,6 +59,9 @@ public sealed record RunOptions
     /// </summary>
     public TimeSpan? ReEngageAfter { get; init; } = TimeSpan.FromMilliseconds(200);
 
+    /// <summary>Record the session to an MCAP file (<c>--record</c>); null: no recording.</summary>
+    public Recording.RecordingOptions? Record { get; init; }
+
     /// <summary>Settings of graph instances replaced for this run (<c>--set</c>), validated as the file's own.</summary>
     public IReadOnlyList<RobotControl.Runtime.GraphFiles.SettingOverride> SettingOverrides { get; init; } = [];
 }

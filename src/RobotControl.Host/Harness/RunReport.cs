@@ -51,6 +51,9 @@ public sealed record RunReport(
     /// <summary>What the JIT compiled on the real-time threads once they ran (null: a virtual run).</summary>
     public CompiledAfterStart? Compiled { get; init; }
 
+    /// <summary>What the session recording wrote (<c>--record</c>; null: not recorded). Not part of <c>report.json</c>.</summary>
+    public Recording.RecordingSummary? Recording { get; init; }
+
     /// <summary>The report as JSON in the documented schema.</summary>
     public string ToJson()
     {

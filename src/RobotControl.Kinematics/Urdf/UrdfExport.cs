@@ -14,7 +14,8 @@ namespace RobotControl.Kinematics.Urdf;
 /// </summary>
 public static class UrdfExport
 {
-    private const double MetresPerMm = 0.001;
+    /// <summary>Metres in a millimetre (URDF and the 3D tools work in metres; the robot files in mm).</summary>
+    public const double MetresPerMm = 0.001;
 
     /// <summary>The URDF joint name of joint <paramref name="jointName"/> of arm <paramref name="armName"/>.</summary>
     public static string JointName(string armName, string jointName) => $"{armName}_{jointName}";

@@ -168,6 +168,27 @@ public sealed class PageTests(ConsoleFixture console)
         await Close(page);
     }
 
+    [Fact]
+    public async Task The_record_button_records_the_session_to_a_file_the_official_reader_reads()
+    {
+        var page = await Open("status", operate: true);
+        await Expect(page, "[data-testid=recording-file]", "not recording");
+        await page.GetByTestId("record").ClickAsync();
+        await Expect(page, "#message.ok", $"recording to {ConsoleFixture.RecordFolder}");
+        await Expect(page, "[data-testid=recording-file]", "recording to ");
+        var file = console.Session.RecordingFile!;
+        await page.WaitForTimeoutAsync(1000); // a second of the session recorded
+        await page.GetByTestId("record").ClickAsync();
+        await Expect(page, "#message.ok", $"recording: {file}: ");
+        await Expect(page, "[data-testid=recording-file]", "not recording");
+        var check = RobotControl.TestSupport.Mcap.McapCheck.Read(file);
+        Assert.Null(check.Error);
+        Assert.True(check.Complete);
+        Assert.True(check.IndexedCounts["/arms/right/joints"] > 100, $"{check.IndexedCounts["/arms/right/joints"]} joint messages");
+        Assert.Contains($"{check.IndexedCounts.Values.Sum()} messages", await page.Locator("#message").InnerTextAsync(), StringComparison.Ordinal);
+        await Close(page);
+    }
+
     private async Task<IPage> Open(string hash, bool operate)
     {
         console.ReleaseOperator();

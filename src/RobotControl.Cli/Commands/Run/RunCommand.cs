@@ -1,6 +1,7 @@
 using RobotControl.Definitions.Model;
 using System.CommandLine;
 using System.Globalization;
+using RobotControl.Cli.Commands.Recording;
 using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
 using RobotControl.Definitions.Loading;
@@ -36,6 +37,7 @@ internal sealed class RunCommand : ICliCommand
         var transport = new Option<string?>("--transport") { Description = "Open this transport instead of the graph's, e.g. serial:/dev/pts/3?baud=1000000 (virtual[:...] is --virtual)" };
         var rtPriority = CliOption.Number("--rt-priority", "Real time: run the bus and loop threads with SCHED_FIFO at this priority (1..99; 0: normal scheduling)", 0, 99, 0);
         var cpu = CliOption.OptionalNumber<int>("--cpu", "Real time: pin the bus and loop threads to this CPU", 0, 1023);
+        var record = RecordOptions.Create();
         var continueOnFault = new Option<bool>("--continue-on-fault") { Description = "Keep commanding when the robot faults (default: stop, motors off, exit 1)" };
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
         command.Arguments.Add(graph);
@@ -50,6 +52,7 @@ internal sealed class RunCommand : ICliCommand
         command.Options.Add(continueOnFault);
         command.Options.Add(rtPriority);
         command.Options.Add(cpu);
+        record.AddTo(command);
         command.SetAction(parse => Run(
             parse.GetValue(graph)!.FullName,
             parse.GetValue(isVirtual),
@@ -59,7 +62,7 @@ internal sealed class RunCommand : ICliCommand
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
             parse.GetValue(set) ?? [],
-            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)),
+            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)) { Record = record.Value(parse) },
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -89,6 +92,7 @@ internal sealed class RunCommand : ICliCommand
                 Transport = isVirtual ? null : extras.Transport,
                 ContinueOnFault = extras.ContinueOnFault,
                 Threads = extras.Threads(),
+                Record = extras.Record?.Options(error),
             };
             RunPreflight.Check(options, catalog);
         }
@@ -132,6 +136,11 @@ internal sealed class RunCommand : ICliCommand
         }
 
         Summarise(result, output);
+        if (result.Recording is { Stopped: null } recording)
+        {
+            output.WriteLine(recording.ToString());
+        }
+
         RunEnd.Tell(result, output, error);
         if (reportPath is not null)
         {

@@ -1,4 +1,5 @@
 using RobotControl.Bus.Transports;
+using RobotControl.Cli.Commands.Recording;
 using RobotControl.Host.Realtime;
 using RobotControl.Host.Session;
 
@@ -11,6 +12,9 @@ namespace RobotControl.Cli.Commands.Run;
 /// <param name="Cpu">The <c>--cpu</c> value (null: any CPU).</param>
 internal sealed record RunExtras(string? Transport, bool ContinueOnFault, int RtPriority = 0, int? Cpu = null)
 {
+    /// <summary>The <c>--record</c> options (null: no recording).</summary>
+    public RecordRequest? Record { get; init; }
+
     /// <summary>The real-time threads' scheduling.</summary>
     /// <exception cref="FormatException">One line naming the option out of range.</exception>
     public RealtimeThreads Threads()

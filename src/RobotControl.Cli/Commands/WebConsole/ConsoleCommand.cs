@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using RobotControl.Cli.Commands.Recording;
 using RobotControl.Cli.Commands.Run;
 using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
@@ -25,7 +26,8 @@ internal sealed class ConsoleCommand : ICliCommand
     /// <inheritdoc />
     public Command Build()
     {
-        var graph = new Argument<FileInfo>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json" };
+        var graph = new Argument<FileInfo?>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json (none with --replay)", Arity = ArgumentArity.ZeroOrOne };
+        var replay = new Option<FileInfo?>("--replay") { Description = "Serve the pages from a recording (robotctl run --record) instead of a robot: play, pause, 0.25x-4x, seek (docs/recording.md)" };
         var isVirtual = new Option<bool>("--virtual") { Description = "Run the virtual robot (real firmware, simulated motors) in real time" };
         var transport = new Option<string?>("--transport") { Description = "Bus transport instead of the graph's: serial:/dev/ttyUSB0?baud=1000000 | usb:0403:6001 | tcp:host:port" };
         var bind = new Option<string>("--bind") { Description = "Address and port to serve on (off this host: give --https-cert)", DefaultValueFactory = _ => "127.0.0.1:5080" };
@@ -41,6 +43,7 @@ internal sealed class ConsoleCommand : ICliCommand
         var kiosk = new Option<bool>("--kiosk") { Description = "With --open: full screen, no browser controls (Chromium's --kiosk)" };
         var rtPriority = CliOption.Number("--rt-priority", "Real time, on a real bus: run the session's bus thread and the loop thread with SCHED_FIFO at this priority (1..99; 0: normal scheduling)", 0, 99, 0);
         var cpu = CliOption.OptionalNumber<int>("--cpu", "Real time, on a real bus: pin the bus and loop threads to this CPU", 0, 1023);
+        var record = RecordOptions.Create();
         var report = CliOption.OutputFile("--report", "At the stop, write the session's report (JSON: last status, the stop's read-back, events, timings) to this file (checked before the session starts)");
         var command = new Command("console", "Web console: bus and controllers, plots, 3D view, run status, graph editor and the surgeon's view of a running session.");
         command.Arguments.Add(graph);
@@ -49,22 +52,32 @@ internal sealed class ConsoleCommand : ICliCommand
             command.Options.Add(o);
         }
 
-        command.SetAction(parse => Run(
-            parse.GetValue(graph)!.FullName,
+        record.AddTo(command);
+        command.Options.Add(replay);
+        command.SetAction(parse => parse.GetValue(replay) is { } file
+            ? ConsoleReplay.Run(file.FullName, parse.GetValue(graph) is null, new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName), parse.InvocationConfiguration.Output, parse.InvocationConfiguration.Error)
+            : Run(
+            parse.GetValue(graph)?.FullName,
             parse.GetValue(isVirtual),
             parse.GetValue(transport),
             new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName),
             parse.GetValue(open),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
-            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk), parse.GetValue(report)?.FullName, new RunExtras(null, false, parse.GetValue(rtPriority), parse.GetValue(cpu))),
+            new ConsoleExtras(parse.GetValue(inject), parse.GetValue(page), parse.GetValue(kiosk), parse.GetValue(report)?.FullName, new RunExtras(null, false, parse.GetValue(rtPriority), parse.GetValue(cpu)) { Record = record.Value(parse) }),
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
     }
 
-    private static int Run(string graphPath, bool isVirtual, string? transport, ConsoleAccess access, bool open, string? pluginsFolder, int seed, ConsoleExtras extras, TextWriter output, TextWriter error)
+    private static int Run(string? graphPath, bool isVirtual, string? transport, ConsoleAccess access, bool open, string? pluginsFolder, int seed, ConsoleExtras extras, TextWriter output, TextWriter error)
     {
+        if (graphPath is null)
+        {
+            error.WriteLine("console: give a graph file, e.g. graphs/teleop-lb.json (or --replay file.mcap)");
+            return 2;
+        }
+
         if (isVirtual && transport is not null)
         {
             error.WriteLine("give --virtual or --transport, not both");
@@ -93,7 +106,8 @@ internal sealed class ConsoleCommand : ICliCommand
 
             extras.CheckPage();
             options = new LiveSessionOptions { GraphPath = graphPath, Catalog = ShippedPlugins.Catalog(pluginsFolder), Virtual = isVirtual, Transport = transport, Seed = seed, Threads = extras.Scheduling.Threads() };
-            session = new LiveSession(options with { Inject = FaultInjection.Parse(extras.Inject) }); // faults for the first session only, not for graphs started from the editor
+            // faults and the recording for the first session only, not for graphs started from the editor
+            session = new LiveSession(options with { Inject = FaultInjection.Parse(extras.Inject), Record = extras.Scheduling.Record?.Options(error) });
         }
         catch (GraphException ex)
         {
@@ -151,10 +165,10 @@ internal sealed class ConsoleCommand : ICliCommand
     }
 
     /// <summary>How long the pages' server may take to close its connections once the motors are off.</summary>
-    private static readonly TimeSpan ServerCloseWait = TimeSpan.FromSeconds(2);
+    internal static readonly TimeSpan ServerCloseWait = TimeSpan.FromSeconds(2);
 
     /// <summary>Closes the pages' server, waiting at most <see cref="ServerCloseWait"/> (a request that hangs does not hold the report).</summary>
-    private static void CloseServer(ConsoleServer server, TextWriter error)
+    internal static void CloseServer(ConsoleServer server, TextWriter error)
     {
         if (!server.DisposeAsync().AsTask().Wait(ServerCloseWait))
         {

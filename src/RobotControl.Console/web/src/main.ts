@@ -1,6 +1,7 @@
 import './style.css';
 import { api, act, show, type StatusReply } from './api';
 import { busPage } from './pages/bus';
+import { replayBar } from './replay';
 
 /** A page: renders into its element, and stops its timers and sockets when left. */
 export type Page = (root: HTMLElement) => () => void;
@@ -53,4 +54,5 @@ document.getElementById('claim')!.addEventListener('click', () =>
 window.addEventListener('hashchange', () => void route());
 void route();
 void heartbeat();
+void replayBar(document.getElementById('replay')!);
 setInterval(() => void heartbeat(), 1000);

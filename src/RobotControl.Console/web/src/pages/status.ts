@@ -1,5 +1,5 @@
-import { api, type StatusReply } from '../api';
-import { el, fmt } from '../dom';
+import { act, api, type StatusReply } from '../api';
+import { button, el, fmt } from '../dom';
 
 interface EventEntry { sequence: number; timeSeconds: number; source: string; message: string }
 interface Timing { component: string; count: number; medianUs: number; p99Us: number; maxUs: number }
@@ -9,6 +9,19 @@ export function statusPage(root: HTMLElement): () => void {
   const summary = el('table', { class: 'kv', 'data-testid': 'run-status' });
   const timings = el('table', { class: 'timings' });
   const log = el('table', { class: 'log', 'data-testid': 'event-log' });
+  let recording: string | null = null;
+  const record = button('Record', () => void act(async () => {
+    const reply = await api<{ message: string }>('POST', '/recording', { on: recording === null });
+    await refreshRecording();
+    return reply;
+  }), { 'data-testid': 'record' });
+  const recordingText = el('span', { 'data-testid': 'recording-file' });
+  async function refreshRecording(): Promise<void> {
+    recording = (await api<{ recordingFile: string | null }>('GET', '/recording')).recordingFile;
+    record.textContent = recording === null ? 'Record' : 'Stop recording';
+    recordingText.textContent = recording === null ? 'not recording' : `recording to ${recording}`;
+  }
+  root.append(el('p', { class: 'recording' }, record, ' ', recordingText));
   root.append(el('div', { class: 'status' },
     el('section', {}, el('h3', {}, 'Session'), summary),
     el('section', {}, el('h3', {}, 'Timing per component'), timings)),
@@ -37,7 +50,7 @@ export function statusPage(root: HTMLElement): () => void {
     }
   }
 
-  const timer = setInterval(() => void refresh().catch(() => undefined), 500);
-  void refresh();
+  const timer = setInterval(() => void refresh().then(refreshRecording).catch(() => undefined), 500);
+  void refresh().then(refreshRecording).catch(() => undefined);
   return () => clearInterval(timer);
 }

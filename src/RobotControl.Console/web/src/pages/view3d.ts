@@ -1,11 +1,13 @@
-import { el } from '../dom';
+import { el, fmt } from '../dom';
 import { RobotScene } from '../robot3d';
 import { SignalStream, type Frame } from '../stream';
 
 // 3D view: both arms from the robot's URDF, measured joints solid, commanded joints as a translucent ghost; orbit camera.
 export function view3dPage(root: HTMLElement): () => void {
   const canvas = el('canvas', { 'data-testid': 'view3d', width: '960', height: '600' });
-  root.append(el('p', {}, 'Solid: measured joints. Translucent: commanded. Drag to orbit, wheel to zoom.'), canvas);
+  const readout = el('table', { class: 'kv', 'data-testid': 'joint-values' });
+  root.append(el('p', {}, 'Solid: measured joints. Translucent: commanded. Drag to orbit, wheel to zoom.'), canvas, readout);
+  const cells = new Map<string, HTMLElement>();
   const view = new RobotScene(canvas, { background: 0xf4f6f8, ghost: true });
   view.resize(960, 600);
   let names: string[] = [];
@@ -16,10 +18,20 @@ export function view3dPage(root: HTMLElement): () => void {
       const column = frame.v[names.indexOf(signal)];
       return column ? column[column.length - 1] : undefined;
     });
+    names.forEach((signal, i) => {
+      const column = frame.v[i];
+      const cell = cells.get(signal);
+      if (cell && column && column.length > 0) cell.textContent = fmt(column[column.length - 1], 6);
+    });
   }, 60);
 
   void view.load().then(() => {
     names = view.signals;
+    readout.replaceChildren(el('tr', {}, el('th', {}, 'signal'), el('th', {}, 'rad')), ...names.map((signal) => {
+      const cell = el('td', { 'data-testid': `joint-${signal}` }, '');
+      cells.set(signal, cell);
+      return el('tr', {}, el('th', {}, signal), cell);
+    }));
     stream.subscribe(names);
   });
   view.start();

@@ -1,0 +1,153 @@
+using System.Diagnostics;
+using System.Globalization;
+using System.Text;
+using RobotControl.Cli;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Recording;
+using RobotControl.Host.Recording.Mcap;
+using RobotControl.Host.Session;
+using RobotControl.Runtime.GraphFiles;
+
+namespace RobotControl.Bench.Recording;
+
+/// <summary>
+/// <c>recording [--graph graphs/teleop-lb.json] [--duration 20s] [--out docs/perf/recording.md]</c>: what recording a
+/// session (MCAP, <c>--record</c>) costs. (1) The loop's tick (Stopwatch around the whole step, the tick observers
+/// and so the recorder's tap included) and its allocations, without and with recording, alternating in one process
+/// on the main job. (2) File size per minute of loop time at decimation 1 and 10. (3) The writer's throughput: rows
+/// of the main job's layout encoded and written (JSON, chunks, CRCs) on one thread, messages per second.
+/// </summary>
+internal sealed class RecordingBench : IBenchCommand
+{
+    public string Name => "recording";
+
+    public string Description => "Session recording (MCAP): tick p99 with vs without, allocations, file size per minute, writer msgs/s.";
+
+    public int Run(string[] args)
+    {
+        var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
+        var duration = RunDuration.Parse(Arg(args, "--duration") ?? "20s");
+        var outPath = Arg(args, "--out") ?? "docs/perf/recording.md";
+        var catalog = ShippedPlugins.Catalog();
+        var c = CultureInfo.InvariantCulture;
+        var dir = Directory.CreateTempSubdirectory("rc-bench-rec-").FullName;
+        HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = TimeSpan.FromSeconds(2) }, catalog); // JIT warm-up
+
+        var rows = new List<(string Name, TickSample Ticks, RecordingSummary? Recording)>();
+        for (var round = 0; round < 3; round++)
+        {
+            rows.Add(("without recording", Measure(graph, duration, catalog, null), null));
+            var file = Path.Combine(dir, $"with-{round}.mcap");
+            var with = Measure(graph, duration, catalog, new RecordingOptions { Path = file });
+            rows.Add(("with recording (decimate 1)", with, with.Recording));
+        }
+
+        var decimated = HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration, Record = new RecordingOptions { Path = Path.Combine(dir, "decimate-10.mcap"), Decimate = 10 } }, catalog).Recording!;
+        var (messages, seconds) = WriterThroughput(graph, catalog, Path.Combine(dir, "throughput.mcap"));
+        Directory.Delete(dir, recursive: true);
+
+        var minutes = duration.TotalMinutes;
+        var without = rows.Where(r => r.Recording is null).Select(r => r.Ticks.P99Us).Average();
+        var withRec = rows.Where(r => r.Recording is not null).Select(r => r.Ticks.P99Us).Average();
+        var md = new StringBuilder();
+        md.AppendLine("# Session recording (MCAP): loop cost, file size, writer throughput");
+        md.AppendLine();
+        md.AppendLine(c, $"Command: `dotnet run -c Release --project bench/RobotControl.Bench -- recording --graph {graph} --duration {duration.TotalSeconds:0.###}s --out {outPath}`");
+        md.AppendLine();
+        md.AppendLine(c, $"Measured {DateTime.UtcNow:yyyy-MM-dd HH:mm} UTC on {Environment.ProcessorCount} cores shared with other work ({Environment.OSVersion}, .NET {Environment.Version}). The main job (two-arm teleoperation on the virtual robot, firmware in the loop, virtual clock, 1 kHz). Runs alternate without and with recording in one process after a warm-up run.");
+        md.AppendLine();
+        md.AppendLine("## Loop tick: the whole step (graph, robot node and the tick observers, so the recorder's tap), thread CPU time");
+        md.AppendLine();
+        md.AppendLine("CPU time of the loop's thread (`ThreadCpuClock`) is what the loop itself spends; the wall-clock p99 is shown too, but on a virtual run the loop runs several times faster than real time and, on 2 shared cores, the writer thread (working at that multiple of its real-time rate) and other people's work preempt it.");
+        md.AppendLine();
+        md.AppendLine("| run | ticks | CPU median us | CPU p99 us | CPU max us | wall p99 us | bytes allocated per tick | loop rows dropped |");
+        md.AppendLine("|---|---|---|---|---|---|---|---|");
+        foreach (var (name, t, rec) in rows)
+        {
+            md.AppendLine(c, $"| {name} | {t.Ticks} | {t.MedianUs:F1} | {t.P99Us:F1} | {t.MaxUs:F1} | {t.WallP99Us:F1} | {t.BytesPerTick:F2} | {rec?.DroppedRows.ToString(c) ?? "-"} |");
+        }
+
+        md.AppendLine();
+        md.AppendLine(c, $"CPU p99 with / without recording (mean of the rounds): {withRec:F1} / {without:F1} us = **{withRec / without:F3}** (aim: within 1.10).");
+        md.AppendLine();
+        md.AppendLine("## File size per minute of loop time (uncompressed chunks)");
+        md.AppendLine();
+        md.AppendLine("| decimation (graph signals, devices, tool poses) | messages | MB | MB per minute |");
+        md.AppendLine("|---|---|---|---|");
+        var full = rows.Last(r => r.Recording is not null).Recording!;
+        md.AppendLine(c, $"| 1 (loop rate) | {full.Messages} | {full.Bytes / 1e6:F1} | {full.Bytes / 1e6 / minutes:F0} |");
+        md.AppendLine(c, $"| 10 | {decimated.Messages} | {decimated.Bytes / 1e6:F1} | {decimated.Bytes / 1e6 / minutes:F0} |");
+        md.AppendLine();
+        md.AppendLine("## Writer throughput (one thread: JSON encoding, chunks, CRC-32, file writes)");
+        md.AppendLine();
+        md.AppendLine(c, $"{messages} messages in {seconds:F2} s: **{messages / seconds:F0} messages/s** ({messages / seconds / 6:F0} loop rows/s at decimation 1, six messages a row).");
+        Directory.CreateDirectory(Path.GetDirectoryName(Path.GetFullPath(outPath))!);
+        File.WriteAllText(outPath, md.ToString());
+        Console.Write(md);
+        return 0;
+    }
+
+    private static TickSample Measure(string graph, TimeSpan duration, Runtime.Discovery.PluginCatalog catalog, RecordingOptions? record)
+    {
+        var ticks = new List<double>((int)(duration.TotalSeconds * 1000) + 16);
+        var cpu = new List<double>(ticks.Capacity);
+        long allocated = 0;
+        var report = HeadlessRun.RunVirtual(new RunOptions { GraphPath = graph, Duration = duration, Record = record }, catalog, new VirtualRunHooks
+        {
+            AroundTick = (loop, _) =>
+            {
+                var bytes = GC.GetAllocatedBytesForCurrentThread();
+                var cpuStart = ThreadCpuClock.NowNs();
+                var start = Stopwatch.GetTimestamp();
+                loop.Step();
+                var us = Stopwatch.GetElapsedTime(start).TotalMicroseconds;
+                var cpuUs = (ThreadCpuClock.NowNs() - cpuStart) * 1e-3;
+                if (loop.TickCount > 1000)
+                {
+                    allocated += GC.GetAllocatedBytesForCurrentThread() - bytes;
+                    ticks.Add(us);
+                    cpu.Add(cpuUs);
+                }
+            },
+        });
+        ticks.Sort();
+        cpu.Sort();
+        static double At(List<double> sorted, double p) => sorted[Math.Min(sorted.Count - 1, (int)(p * sorted.Count))];
+        return new TickSample(report.Ticks, At(cpu, 0.5), At(cpu, 0.99), cpu[^1], At(ticks, 0.99), allocated / (double)ticks.Count) { Recording = report.Recording };
+    }
+
+    /// <summary>Rows of the main job's layout (values from its initial state) encoded and written on this thread only.</summary>
+    private static (ulong Messages, double Seconds) WriterThroughput(string graph, Runtime.Discovery.PluginCatalog catalog, string file)
+    {
+        var loaded = GraphFile.Load(graph, catalog, TimeProvider.System);
+        var layout = new RecordingLayout(loaded);
+        var row = new double[layout.Width];
+        for (var i = 0; i < row.Length; i++)
+        {
+            row[i] = 0.001 * i;
+        }
+
+        using var writer = new McapWriter(File.Create(file), string.Empty, SessionRecorder.Library);
+        using var channels = new RecordingChannels(writer, layout, []);
+        var watch = Stopwatch.StartNew();
+        for (var tick = 0UL; tick < 20_000; tick++)
+        {
+            channels.WriteRow(row, tick * 1_000_000UL, full: true);
+        }
+
+        writer.Finish();
+        var seconds = watch.Elapsed.TotalSeconds;
+        return (writer.MessageCounts.Values.Aggregate(0UL, (a, b) => a + b), seconds);
+    }
+
+    private static string? Arg(string[] args, string name)
+    {
+        var i = Array.IndexOf(args, name);
+        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
+    }
+
+    private sealed record TickSample(long Ticks, double MedianUs, double P99Us, double MaxUs, double WallP99Us, double BytesPerTick)
+    {
+        public RecordingSummary? Recording { get; init; }
+    }
+}

@@ -1,0 +1,249 @@
+using System.Globalization;
+using RobotControl.WebConsole.Session;
+
+namespace RobotControl.WebConsole.Replay;
+
+/// <summary>
+/// The console's pages served from a recording (<c>robotctl console --replay file.mcap</c>): no robot. A playback
+/// clock (on an injected <see cref="TimeProvider"/>) moves through the recording at 0.25x to 4x; <see cref="Pump"/>
+/// appends the rows recorded up to the playback position to the plots' ring, so the plots and the 3D view show them as
+/// they showed the live session; the status page shows the run level at that time and the trips so far, and the
+/// event log the run-level transitions and trips up to it. Every robot command is refused.
+/// </summary>
+public sealed class ReplaySession : IConsoleSession
+{
+    /// <summary>Slowest and fastest playback.</summary>
+    public const double MinRate = 0.25, MaxRate = 4;
+
+    private const string Refusal = "a replay: no robot to command";
+    private readonly ReplayData _data;
+    private readonly TimeProvider _time;
+    private readonly string _file;
+    private readonly Lock _gate = new();
+    private readonly ITimer? _timer;
+    private long _lastWall;
+    private double _position;
+    private double _rate = 1;
+    private bool _playing = true;
+    private int _next;
+    private volatile SessionStatus _status;
+
+    /// <summary>Opens <paramref name="path"/>; with <paramref name="pumpEvery"/>, a timer pumps the ring at that interval.</summary>
+    /// <exception cref="InvalidDataException">Not a recording robotctl can replay (one line naming the file).</exception>
+    public ReplaySession(string path, TimeProvider time, TimeSpan? pumpEvery = null)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        ArgumentNullException.ThrowIfNull(time);
+        _data = ReplayData.Load(path);
+        _time = time;
+        _file = Path.GetFileName(path);
+        Signals = new SignalRing(_data.Names, [.. _data.Names.Select(_ => string.Empty)], 16384);
+        Model = _data.Model;
+        Truncated = _data.Contents.Truncated;
+        _lastWall = time.GetTimestamp();
+        _status = BuildStatus();
+        _timer = pumpEvery is { } every ? time.CreateTimer(_ => Pump(), null, every, every) : null;
+    }
+
+    /// <summary>Where and why the file was cut short (played up to its last complete chunk), or null.</summary>
+    public string? Truncated { get; }
+
+    /// <summary>Length of the recording, seconds.</summary>
+    public double DurationSeconds => _data.Times.Count == 0 ? 0 : _data.Times[^1];
+
+    /// <summary>The playback position, seconds from the start.</summary>
+    public double PositionSeconds
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _position;
+            }
+        }
+    }
+
+    /// <inheritdoc />
+    public SessionStatus Status => _status;
+
+    /// <inheritdoc />
+    public IReadOnlyList<ControllerView> Controllers => [];
+
+    /// <inheritdoc />
+    public SignalRing Signals { get; }
+
+    /// <inheritdoc />
+    public IReadOnlyList<ComponentTiming> Timings => [];
+
+    /// <inheritdoc />
+    public RobotModelView Model { get; }
+
+    /// <inheritdoc />
+    public SurgeonView Surgeon { get; } = new([], [], []);
+
+    /// <inheritdoc />
+    public WorkspaceView Workspace { get; } = new([]);
+
+    /// <summary>Plays or pauses.</summary>
+    public void Play(bool playing) => Control(() => _playing = playing);
+
+    /// <summary>Sets the playback rate.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">Outside <see cref="MinRate"/>..<see cref="MaxRate"/>.</exception>
+    public void Rate(double rate)
+    {
+        if (!(rate >= MinRate && rate <= MaxRate))
+        {
+            throw new ArgumentOutOfRangeException(nameof(rate), rate, string.Create(CultureInfo.InvariantCulture, $"replay rate {rate}: give {MinRate} to {MaxRate}"));
+        }
+
+        Control(() => _rate = rate);
+    }
+
+    /// <summary>Moves the playback position to <paramref name="seconds"/> (clamped to the recording); the ring continues from there.</summary>
+    public void Seek(double seconds) => Control(() =>
+    {
+        _position = Math.Clamp(double.IsFinite(seconds) ? seconds : 0, 0, DurationSeconds);
+        _next = Math.Max(0, _data.Times.BinarySearch(_position) is var i && i >= 0 ? i : ~i - 1); // the row shown at the new position comes first
+    });
+
+    /// <summary>Moves the playback clock to now and appends the rows up to the position to the ring (the timer's work; tests call it).</summary>
+    public void Pump()
+    {
+        lock (_gate)
+        {
+            Advance();
+            while (_next < _data.Times.Count && _data.Times[_next] <= _position)
+            {
+                Signals.Append(_data.Times[_next], _data.Rows[_next]);
+                _next++;
+            }
+
+            _status = BuildStatus();
+        }
+    }
+
+    /// <summary>The whole recording's run-level transitions and trips (the timeline), whatever the position.</summary>
+    public IReadOnlyList<EventEntry> Timeline => [.. _data.Timeline.Select((e, i) => new EventEntry(i + 1, e.Seconds, e.Source, e.Message))];
+
+    /// <inheritdoc />
+    public IReadOnlyList<EventEntry> EventsAfter(long after)
+    {
+        var position = PositionSeconds;
+        return [.. Timeline.Where(e => e.Sequence > after && e.TimeSeconds <= position)];
+    }
+
+    /// <inheritdoc />
+    public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
+
+    /// <inheritdoc />
+    public string? RecordingFile => null;
+
+    /// <inheritdoc />
+    public Task<CommandResult> RecordAsync(bool on) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> DiscoverAsync() => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> RenameAsync(int controllerId, string name) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> ReloadParametersAsync(int controllerId) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> RebootAsync(int controllerId) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> WriteParameterAsync(string motor, string parameter, double value) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> JogAsync(string motor, double degPerS) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> SetpointAsync(string motor, double deg) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> ReleaseAsync(string motor) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> TorqueAsync(bool on) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> PedalAsync(bool down) => Refused();
+
+    /// <summary>Accepted, as everywhere: a replay has no motors to stop.</summary>
+    public Task<CommandResult> EmergencyStopAsync() => Task.FromResult(CommandResult.Ok("a replay: no motors run"));
+
+    /// <inheritdoc />
+    public Task<CommandResult> HomeAsync(string? motor) => Refused();
+
+    /// <inheritdoc />
+    public Task<CommandResult> ClearFaultsAsync() => Refused();
+
+    /// <summary>A replay has no motors.</summary>
+    public void StopMotorsNow(string reason)
+    {
+    }
+
+    /// <inheritdoc />
+    public SessionEnd Close()
+    {
+        _timer?.Dispose();
+        return new SessionEnd(_status with { Session = "stopped" }, null, EventsAfter(0), []);
+    }
+
+    /// <inheritdoc />
+    public void Dispose() => _timer?.Dispose();
+
+    private void Control(Action change)
+    {
+        lock (_gate)
+        {
+            Advance();
+            change();
+            _status = BuildStatus();
+        }
+    }
+
+    private void Advance()
+    {
+        var now = _time.GetTimestamp();
+        if (_playing)
+        {
+            _position = Math.Min(DurationSeconds, _position + (_time.GetElapsedTime(_lastWall, now).TotalSeconds * _rate));
+        }
+
+        _lastWall = now;
+    }
+
+    private SessionStatus BuildStatus()
+    {
+        var level = _data.Levels.LastOrDefault(l => l.Seconds <= _position).Level ?? "INIT";
+        var trips = _data.Timeline.Where(e => e.Seconds <= _position && e.Message.StartsWith("trip: ", StringComparison.Ordinal)).Select(e => e.Message).ToList();
+        var rate = double.TryParse(_data.Meta.GetValueOrDefault("loop_rate_hz"), NumberStyles.Float, CultureInfo.InvariantCulture, out var hz) ? hz : 0;
+        var state = string.Create(CultureInfo.InvariantCulture, $"replay {(_playing ? "playing" : "paused")} at {_rate:0.##}x, {_position:F3} of {DurationSeconds:F3} s");
+        return new SessionStatus(
+            _data.Meta.GetValueOrDefault("robot") ?? "?",
+            _data.Meta.GetValueOrDefault("graph") ?? "?",
+            "replay:" + _file,
+            0,
+            0,
+            rate,
+            _next,
+            0,
+            0,
+            0,
+            0,
+            null,
+            _position,
+            level,
+            "replay",
+            state,
+            false,
+            trips,
+            0,
+            new BusCounters(0, 0, 0, 0, 0));
+    }
+
+    private static Task<CommandResult> Refused() => Task.FromResult(CommandResult.Fail(CommandOutcome.Refused, Refusal));
+}

@@ -1,0 +1,51 @@
+using System.Globalization;
+using Microsoft.Extensions.Time.Testing;
+using Microsoft.Playwright;
+using RobotControl.Host.Harness;
+using RobotControl.Host.Recording;
+using RobotControl.Host.Recording.Mcap;
+using RobotControl.WebConsole.Replay;
+using RobotControl.WebConsole.Server;
+
+namespace RobotControl.WebConsole.Tests.Web;
+
+/// <summary>
+/// <c>robotctl console --replay</c> in real headless Chromium: the 3D view shows the joint values the recording holds
+/// at the playback time, and the replay bar's slider moves it; the timeline carries the run levels.
+/// </summary>
+public sealed class ReplayPageTests
+{
+    [Fact]
+    public async Task The_3d_view_shows_the_joint_values_the_recording_holds_at_time_t_and_the_slider_moves_them()
+    {
+        var file = Path.Combine(Directory.CreateTempSubdirectory("rc-replay-page-").FullName, "main.mcap");
+        HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = file } }, ConsoleFixture.Catalog());
+        var time = new FakeTimeProvider();
+        using var replay = new ReplaySession(file, time);
+        replay.Play(false);
+        replay.Seek(1.2345);
+        replay.Pump();
+        await using var server = await ConsoleServer.StartAsync(replay, BindAddress.Parse("127.0.0.1:0"), null);
+        await using var chromium = await HeadlessChromium.LaunchAsync();
+        var page = await (await chromium.Browser.NewContextAsync()).NewPageAsync();
+        await page.GotoAsync(ConsoleFixture.PageUrl(server, "view3d"));
+        const string Elbow = "robot.right.elbow.position";
+
+        await Assertions.Expect(page.GetByTestId($"joint-{Elbow}")).ToHaveTextAsync(Expected(file, Elbow, 1.2345), new() { Timeout = 30_000 });
+        await Assertions.Expect(page.GetByTestId("replay-time")).ToContainTextAsync("1.234 / ", new() { Timeout = 10_000 });
+        Assert.True(await page.GetByTestId("replay-timeline").Locator(".mark").CountAsync() >= 3, "the run levels are on the timeline");
+
+        var slider = page.GetByTestId("replay-slider");
+        await slider.EvaluateAsync("(s) => { s.value = '0.5'; s.dispatchEvent(new Event('change')); }");
+        await Assertions.Expect(page.GetByTestId($"joint-{Elbow}")).ToHaveTextAsync(Expected(file, Elbow, 0.5), new() { Timeout = 30_000 });
+        Assert.Equal(0.5, replay.PositionSeconds, 9);
+    }
+
+    /// <summary>The recording's value of <paramref name="signal"/> at the last row at or before <paramref name="t"/>, as the page prints it (6 decimals).</summary>
+    private static string Expected(string file, string signal, double t)
+    {
+        var table = CsvExport.Tabulate(McapReader.Read(file), RecordingTopics.Signals);
+        var row = table.Rows.Last(r => double.Parse(r[0]!, CultureInfo.InvariantCulture) <= t + 1e-12);
+        return double.Parse(row[table.Columns.ToList().IndexOf(signal)]!, CultureInfo.InvariantCulture).ToString("F6", CultureInfo.InvariantCulture);
+    }
+}
