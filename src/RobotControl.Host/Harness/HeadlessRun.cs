@@ -88,6 +88,7 @@ public static class HeadlessRun
             ticks,
             () =>
             {
+                recorder?.KeepUpWithVirtualTime();
                 surgeon.Poll();
                 if (loop.TickCount - reported >= progressEvery || loop.TickCount >= ticks)
                 {

@@ -80,6 +80,20 @@ public sealed class SessionRecorder : IDisposable
         return recorder;
     }
 
+    /// <summary>
+    /// For a run on the virtual clock, which runs as fast as the machine allows: between ticks (never inside one), waits
+    /// while the writer has half the ring or more to drain, so that a virtual run loses no row to a writer that is behind
+    /// (compiling, at its first recording in the process, or on a loaded machine); virtual time does not move meanwhile.
+    /// A real-time run never waits for it: there the ring holds seconds of rows and a full one drops rows, counted.
+    /// </summary>
+    public void KeepUpWithVirtualTime()
+    {
+        while (_ring.Count >= _options.RingRows / 2 && StoppedReason is null && _thread.IsAlive)
+        {
+            Thread.Sleep(1);
+        }
+    }
+
     /// <summary>Records an operator command (any thread): who gave it and what it was.</summary>
     public void OperatorCommand(string who, string what)
     {
