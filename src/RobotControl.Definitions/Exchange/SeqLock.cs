@@ -2,27 +2,31 @@ namespace RobotControl.Definitions.Exchange;
 
 /// <summary>
 /// The one sequence lock of the code base: a fixed-length run of values published by one writer thread and read by
-/// any number of readers without locks or allocation. The writer never waits; a reader retries while a write is in
-/// progress (a few nanoseconds) and always sees one complete write, never a mix of two. Used for the robot's
-/// setpoints and feedback (vectors of doubles) and, through the SDK's <c>LatestValue</c>, for device samples.
+/// any number of readers without locks or allocation, and without either side ever waiting for the other. Writes go
+/// to two slots in turn; a reader copies the slot of the latest complete write, so a write in progress (even one whose
+/// thread was preempted half-way, on a loaded machine) never holds a reader up. A reader retries only when the writer
+/// has lapped it (two writes began during its copy) and always sees one complete write, never a mix of two. Used for
+/// the robot's setpoints and feedback (vectors of doubles) and, through the SDK's <c>LatestValue</c>, for device samples.
 /// </summary>
 /// <typeparam name="T">The element (copied on every write and read).</typeparam>
 public sealed class SeqLock<T>
     where T : struct
 {
-    private readonly T[] _values;
-    private int _sequence;
+    private readonly T[] _values; // two slots: write number w goes to slot w % 2
+    private readonly int _length;
+    private int _sequence; // 2 x completed writes, +1 while a write is in progress
 
     /// <summary>A lock over <paramref name="length"/> values, all default until the first write.</summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="length"/> is below 1.</exception>
     public SeqLock(int length)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(length, 1);
-        _values = new T[length];
+        _length = length;
+        _values = new T[2 * length];
     }
 
     /// <summary>Values per write.</summary>
-    public int Length => _values.Length;
+    public int Length => _length;
 
     /// <summary>Number of completed writes.</summary>
     public int Version => Volatile.Read(ref _sequence) >> 1;
@@ -30,31 +34,39 @@ public sealed class SeqLock<T>
     /// <summary>Publishes the first <see cref="Length"/> values of <paramref name="values"/> (one writer thread only).</summary>
     public void Write(ReadOnlySpan<T> values)
     {
-        var s = _sequence;
-        Volatile.Write(ref _sequence, s + 1); // odd: write in progress
-        Interlocked.MemoryBarrier();
-        values[.._values.Length].CopyTo(_values);
-        Volatile.Write(ref _sequence, s + 2); // even: stable
+        values[.._length].CopyTo(BeginWrite());
+        EndWrite();
     }
 
     /// <summary>Copies the latest complete write into <paramref name="destination"/>; returns the number of writes it is.</summary>
     public int Read(Span<T> destination)
     {
-        var spinner = default(SpinWait);
         while (true)
         {
-            var before = Volatile.Read(ref _sequence);
-            if ((before & 1) == 0)
-            {
-                _values.AsSpan().CopyTo(destination);
-                Interlocked.MemoryBarrier();
-                if (Volatile.Read(ref _sequence) == before)
-                {
-                    return before >> 1;
-                }
-            }
+            var completed = Volatile.Read(ref _sequence) >> 1;
+            Slot(completed).CopyTo(destination);
+            Interlocked.MemoryBarrier();
 
-            spinner.SpinOnce(sleep1Threshold: -1);
+            // The slot read is rewritten by write number completed + 2, which begins when the sequence reaches
+            // 2 (completed + 1) + 1: until then the copy is whole.
+            if (Volatile.Read(ref _sequence) < (2 * completed) + 3)
+            {
+                return completed;
+            }
         }
     }
+
+    /// <summary>Opens the next write (odd sequence) and returns its slot; <see cref="EndWrite"/> publishes it. For tests of a write left open.</summary>
+    internal Span<T> BeginWrite()
+    {
+        var s = _sequence;
+        Volatile.Write(ref _sequence, s + 1); // odd: write in progress
+        Interlocked.MemoryBarrier();
+        return Slot((s >> 1) + 1);
+    }
+
+    /// <summary>Publishes the write opened by <see cref="BeginWrite"/> (even sequence).</summary>
+    internal void EndWrite() => Volatile.Write(ref _sequence, _sequence + 1);
+
+    private Span<T> Slot(int write) => _values.AsSpan((write & 1) * _length, _length);
 }

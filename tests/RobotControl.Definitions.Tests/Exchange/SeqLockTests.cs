@@ -51,4 +51,43 @@ public sealed class SeqLockTests
         Assert.Equal(0, torn);
         Assert.True(values.Version > 0);
     }
+
+    [Fact]
+    public void A_reader_never_waits_for_a_write_left_half_done()
+    {
+        // A writer preempted in the middle of a write (on a loaded machine) must not hold the control loop: the reader
+        // gets the last complete write at once. Before the two slots, this Read spun until the write ended.
+        var values = new SeqLock<double>(2);
+        values.Write([1.0, 2.0]);
+        var open = values.BeginWrite();
+        open[0] = 7; // half of the next write
+
+        var read = new double[2];
+        var version = -1;
+        var reader = new Thread(() => version = values.Read(read)) { IsBackground = true };
+        reader.Start();
+
+        // A hang guard, not a timing: with a reader that waits for the writer, the write never ends and this fails.
+        Assert.True(reader.Join(TimeSpan.FromSeconds(30)), "the reader waited for the open write");
+        Assert.Equal(1, version);
+        Assert.Equal([1.0, 2.0], read);
+
+        open[1] = 8;
+        values.EndWrite();
+        Assert.Equal(2, values.Read(read));
+        Assert.Equal([7.0, 8.0], read);
+    }
+
+    [Fact]
+    public void Writes_alternate_slots_and_a_read_is_always_the_latest_complete_one()
+    {
+        var values = new SeqLock<int>(3);
+        var read = new int[3];
+        for (var n = 1; n <= 5; n++)
+        {
+            values.Write([n, n * 10, n * 100]);
+            Assert.Equal(n, values.Read(read));
+            Assert.Equal([n, n * 10, n * 100], read);
+        }
+    }
 }
