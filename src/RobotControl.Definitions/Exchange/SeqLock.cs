@@ -25,6 +25,13 @@ public sealed class SeqLock<T>
         _values = new T[2 * length];
     }
 
+    /// <summary>A lock whose sequence starts at <paramref name="sequence"/> (even): for tests of the count wrapping.</summary>
+    internal SeqLock(int length, int sequence)
+        : this(length)
+    {
+        _sequence = sequence & ~1;
+    }
+
     /// <summary>Values per write.</summary>
     public int Length => _length;
 
@@ -43,13 +50,14 @@ public sealed class SeqLock<T>
     {
         while (true)
         {
-            var completed = Volatile.Read(ref _sequence) >> 1;
+            var before = Volatile.Read(ref _sequence);
+            var completed = before >> 1;
             Slot(completed).CopyTo(destination);
             Interlocked.MemoryBarrier();
 
-            // The slot read is rewritten by write number completed + 2, which begins when the sequence reaches
-            // 2 (completed + 1) + 1: until then the copy is whole.
-            if (Volatile.Read(ref _sequence) < (2 * completed) + 3)
+            // The slot read is rewritten by write number completed + 2, which begins when the sequence has moved 3 past
+            // 2 x completed: until then the copy is whole. (Differences, so that the count may wrap past int.MaxValue.)
+            if (unchecked(Volatile.Read(ref _sequence) - (before & ~1)) < 3)
             {
                 return completed;
             }

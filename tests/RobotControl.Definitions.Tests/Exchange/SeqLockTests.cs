@@ -90,4 +90,32 @@ public sealed class SeqLockTests
             Assert.Equal([n, n * 10, n * 100], read);
         }
     }
+
+    [Fact]
+    public void The_write_count_may_wrap_past_int_max_value_without_holding_a_reader()
+    {
+        // At a few thousand writes a second the count wraps after days: a reader must still return at once, and the
+        // latest complete write, on both sides of the wrap (with a write left open across it, too).
+        var values = new SeqLock<int>(1, int.MaxValue - 5);
+        for (var n = 1; n <= 6; n++)
+        {
+            values.Write([n]);
+            Assert.Equal(n, ReadOnAnotherThread(values, $"after write {n}"));
+            var open = values.BeginWrite();
+            open[0] = -n; // left open while a reader reads
+            Assert.Equal(n, ReadOnAnotherThread(values, $"with write {n + 1} open"));
+            values.EndWrite();
+            Assert.Equal(-n, ReadOnAnotherThread(values, $"after write {n + 1}"));
+        }
+    }
+
+    /// <summary>Reads on a background thread, so that a reader that never returns fails the test instead of hanging it.</summary>
+    private static int ReadOnAnotherThread(SeqLock<int> values, string when)
+    {
+        var read = new int[1];
+        var reader = new Thread(() => values.Read(read)) { IsBackground = true };
+        reader.Start();
+        Assert.True(reader.Join(TimeSpan.FromSeconds(30)), $"the reader did not return {when}"); // a hang guard, not a timing
+        return read[0];
+    }
 }
