@@ -17,6 +17,7 @@ public sealed class KinematicChain
     private readonly int[] _jointRow;
     private readonly double[] _min;
     private readonly double[] _max;
+    private readonly bool[] _fullTurn;
 
     /// <summary>Builds the chain of <paramref name="robot"/>'s arm.</summary>
     public KinematicChain(RobotDefinition robot)
@@ -65,6 +66,7 @@ public sealed class KinematicChain
 
         _min = joints.Select(j => j.MinRad).ToArray();
         _max = joints.Select(j => j.MaxRad).ToArray();
+        _fullTurn = joints.Select(j => j.MaxRad - j.MinRad >= (2 * Math.PI) - 1e-9).ToArray();
         Rows = rows;
         Joints = joints;
     }
@@ -126,6 +128,33 @@ public sealed class KinematicChain
         {
             q[i] = 0.5 * (_min[i] + _max[i]);
         }
+    }
+
+    /// <summary>
+    /// True when joint <paramref name="joint"/>'s range is a whole turn or more (a tool roll of ±180°): it has no real
+    /// end, and a motion past one end re-enters at the other.
+    /// </summary>
+    internal bool IsFullTurn(int joint) => _fullTurn[joint];
+
+    /// <summary><paramref name="value"/> brought into joint <paramref name="joint"/>'s range: by whole turns for a full-turn joint, then clamped.</summary>
+    internal double IntoRange(int joint, double value)
+    {
+        var min = _min[joint];
+        var max = _max[joint];
+        if (_fullTurn[joint])
+        {
+            while (value > max)
+            {
+                value -= 2 * Math.PI;
+            }
+
+            while (value < min)
+            {
+                value += 2 * Math.PI;
+            }
+        }
+
+        return Math.Clamp(value, min, max);
     }
 
     internal double CosAlpha(int row) => _cosAlpha[row];

@@ -24,7 +24,6 @@ internal sealed class AlignedAxisHops
     private readonly ReadOnlyMemory<double> _low;
     private readonly ReadOnlyMemory<double> _high;
     private readonly double[] _hops;
-    private readonly bool[] _fullTurn;
     private int _count;
     private int _next;
 
@@ -34,11 +33,6 @@ internal sealed class AlignedAxisHops
         _low = low;
         _high = high;
         _hops = new double[MaxHops * chain.JointCount];
-        _fullTurn = new bool[chain.JointCount];
-        for (var i = 0; i < chain.JointCount; i++)
-        {
-            _fullTurn[i] = chain.MaxRad[i] - chain.MinRad[i] >= (2 * Math.PI) - 1e-9;
-        }
     }
 
     /// <summary>Hops left from the last <see cref="Propose"/>.</summary>
@@ -77,7 +71,7 @@ internal sealed class AlignedAxisHops
                 var sign = Vector3d.Dot(axisI, axisJ) > 0 ? 1.0 : -1.0;
                 var deltaLow = low[i] - q[i];
                 var deltaHigh = high[i] - q[i];
-                if (!_fullTurn[j])
+                if (!_chain.IsFullTurn(j))
                 {
                     var a = sign * (q[j] - high[j]);
                     var b = sign * (q[j] - low[j]);
@@ -96,7 +90,7 @@ internal sealed class AlignedAxisHops
                     var hop = _hops.AsSpan(_count * n, n);
                     q.CopyTo(hop);
                     hop[i] = Math.Clamp(q[i] + delta, _chain.MinRad[i], _chain.MaxRad[i]);
-                    hop[j] = Turn(q[j] - (sign * delta), j);
+                    hop[j] = _chain.IntoRange(j, q[j] - (sign * delta));
                     _count++;
                 }
             }
@@ -111,25 +105,5 @@ internal sealed class AlignedAxisHops
         var n = _chain.JointCount;
         _hops.AsSpan(_next * n, n).CopyTo(q);
         _next++;
-    }
-
-    private double Turn(double value, int joint)
-    {
-        var min = _chain.MinRad[joint];
-        var max = _chain.MaxRad[joint];
-        if (_fullTurn[joint])
-        {
-            while (value > max)
-            {
-                value -= 2 * Math.PI;
-            }
-
-            while (value < min)
-            {
-                value += 2 * Math.PI;
-            }
-        }
-
-        return Math.Clamp(value, min, max);
     }
 }

@@ -24,19 +24,13 @@ internal sealed class BoundedLevenbergMarquardt
     private readonly double[] _step;
     private readonly double[] _trial;
     private readonly int[] _free;
-    private readonly bool[] _fullTurn;
+    private readonly KinematicChain _chain;
 
     internal BoundedLevenbergMarquardt(KinematicChain chain)
     {
         var jointCount = chain.JointCount;
         _n = jointCount;
-        _fullTurn = new bool[jointCount];
-        for (var i = 0; i < jointCount; i++)
-        {
-            // A range of a whole turn or more has no real end: a step past one end re-enters at the other.
-            _fullTurn[i] = chain.MaxRad[i] - chain.MinRad[i] >= (2 * Math.PI) - 1e-9;
-        }
-
+        _chain = chain;
         _jacobian = new double[12 * jointCount];
         _normal = new double[jointCount * jointCount];
         _jtr = new double[jointCount];
@@ -92,7 +86,7 @@ internal sealed class BoundedLevenbergMarquardt
                 var g = _jtr[i];
                 var atMinPushedOut = q[i] <= min[i] + BoundSlackRad && g > 0;
                 var atMaxPushedOut = q[i] >= max[i] - BoundSlackRad && g < 0;
-                var pinned = !_fullTurn[i] && (atMinPushedOut || atMaxPushedOut);
+                var pinned = !_chain.IsFullTurn(i) && (atMinPushedOut || atMaxPushedOut);
                 if (!pinned)
                 {
                     _free[freeCount++] = i;
@@ -134,7 +128,7 @@ internal sealed class BoundedLevenbergMarquardt
                 for (var f = 0; f < freeCount; f++)
                 {
                     var i = _free[f];
-                    var value = Project(q[i] + (scale * _step[f]), i, min[i], max[i]);
+                    var value = _chain.IntoRange(i, q[i] + (scale * _step[f]));
                     moved = Math.Max(moved, Math.Abs(value - q[i]));
                     _trial[i] = value;
                 }
@@ -171,23 +165,6 @@ internal sealed class BoundedLevenbergMarquardt
                 }
             }
         }
-    }
-
-    private double Project(double value, int joint, double min, double max)
-    {
-        if (_fullTurn[joint])
-        {
-            if (value > max)
-            {
-                value -= 2 * Math.PI;
-            }
-            else if (value < min)
-            {
-                value += 2 * Math.PI;
-            }
-        }
-
-        return Math.Clamp(value, min, max);
     }
 
     /// <summary>Solves (A_FF + λ diag(max(A_ii, floor))) δ = -(Jᵀr)_F by Cholesky; false if not positive definite.</summary>
