@@ -1,4 +1,5 @@
 using System.Globalization;
+using System.Text.Json;
 using RobotControl.Host.Recording;
 using RobotControl.Host.Recording.Mcap;
 using RobotControl.Kinematics.Urdf;
@@ -8,34 +9,50 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.WebConsole.Replay;
 
 /// <summary>
-/// A recording (<c>--record</c>) read for the console's pages: the graph's signals and each arm's commanded joints as
-/// rows of the plots' ring (the live console's names: <c>instance.port</c>, <c>robot.{arm}.{joint}.command</c>), the
-/// run levels and trips on the timeline, and the 3D view's model from the recording's URDF attachment.
+/// What the replay learns when it opens a recording (<c>--record</c>), by the file's index: the plots' signal names (the
+/// live console's: <c>instance.port</c> for the graph's signals, <c>robot.{arm}.{joint}.command</c> for each arm's
+/// commanded joints), the run levels, trips and operator commands on the timeline, and the 3D view's model from the
+/// recording's URDF attachment. The rows themselves stay in the file and are read as the playback reaches them
+/// (<see cref="ReplayRows"/>).
 /// </summary>
-internal sealed class ReplayData
+internal sealed class ReplayData : IDisposable
 {
-    private ReplayData(McapContents contents)
+    private ReplayData(McapFile file, McapChannel signals)
     {
-        Contents = contents;
-        Meta = contents.Metadata.GetValueOrDefault("robotcontrol") ?? [];
+        File = file;
+        Meta = file.Metadata.GetValueOrDefault("robotcontrol") ?? new Dictionary<string, string>();
+        StartNs = CsvExport.StartNs(file);
+        Signals = signals.Id;
     }
 
-    /// <summary>What the file holds.</summary>
-    public McapContents Contents { get; }
+    /// <summary>The recording.</summary>
+    public McapFile File { get; }
 
     /// <summary>The recording's <c>robotcontrol</c> metadata.</summary>
     public IReadOnlyDictionary<string, string> Meta { get; }
 
+    /// <summary>Log time of the recording's start (ns): times are seconds from it.</summary>
+    public ulong StartNs { get; }
+
+    /// <summary>The graph's signals channel.</summary>
+    public ushort Signals { get; }
+
+    /// <summary>Each arm's joints channel.</summary>
+    public List<ushort> Joints { get; } = [];
+
+    /// <summary>How many leading values of a row are the graph's signals (the arms' commanded joints follow).</summary>
+    public int SignalCount { get; private set; }
+
+    /// <summary>Each arm's joint count, in the order of <see cref="Joints"/>.</summary>
+    public List<int> JointCounts { get; } = [];
+
     /// <summary>The ring's signal names.</summary>
     public List<string> Names { get; } = [];
 
-    /// <summary>Row times, seconds from the start, ascending.</summary>
-    public List<double> Times { get; } = [];
+    /// <summary>Length of the recording, seconds.</summary>
+    public double DurationSeconds => File.EndNs <= StartNs ? 0 : Seconds(File.EndNs);
 
-    /// <summary>Rows, one value per name.</summary>
-    public List<double[]> Rows { get; } = [];
-
-    /// <summary>Run-level transitions and trips: seconds, source, what.</summary>
+    /// <summary>Run-level transitions, trips and operator commands: seconds, source, what.</summary>
     public List<(double Seconds, string Source, string Message)> Timeline { get; } = [];
 
     /// <summary>The run level after each transition (seconds, level).</summary>
@@ -44,104 +61,117 @@ internal sealed class ReplayData
     /// <summary>The 3D view's model.</summary>
     public RobotModelView Model { get; private set; } = new(string.Empty, []);
 
-    /// <summary>Reads <paramref name="path"/>.</summary>
+    /// <summary>Opens <paramref name="path"/>.</summary>
     /// <exception cref="InvalidDataException">Not MCAP, damaged, or not a robotctl recording (one line naming the file).</exception>
     public static ReplayData Load(string path)
     {
-        var contents = McapReader.Read(path);
-        var data = new ReplayData(contents);
-        if (!contents.Channels.Values.Any(c => c.Topic == RecordingTopics.Signals))
+        var file = McapFile.Open(path);
+        try
         {
-            throw new InvalidDataException($"{path}: no {RecordingTopics.Signals} channel: not a robotctl recording (robotctl run --record)");
+            var signals = file.Channel(RecordingTopics.Signals) ?? throw new InvalidDataException($"{path}: no {RecordingTopics.Signals} channel: not a robotctl recording (robotctl run --record)");
+            var data = new ReplayData(file, signals);
+            data.Build();
+            return data;
         }
-
-        data.Build();
-        return data;
+        catch
+        {
+            file.Dispose();
+            throw;
+        }
     }
+
+    /// <summary>Seconds from the start of log time <paramref name="ns"/>.</summary>
+    public double Seconds(ulong ns) => (long)(ns - StartNs) / 1e9;
+
+    /// <summary>Log time (ns) of <paramref name="seconds"/> from the start.</summary>
+    public ulong Ns(double seconds) => StartNs + (ulong)Math.Max(0, Math.Round(seconds * 1e9));
+
+    /// <inheritdoc />
+    public void Dispose() => File.Dispose();
 
     private void Build()
     {
-        var signals = CsvExport.Tabulate(Contents, RecordingTopics.Signals);
-        Names.AddRange(signals.Columns.Skip(1));
-        var arms = (Meta.GetValueOrDefault("arms") ?? string.Empty).Split(',', StringSplitOptions.RemoveEmptyEntries);
-        var commands = arms.Select(a => (Arm: a, Table: CsvExport.Tabulate(Contents, RecordingTopics.Joints(a)))).ToList();
-        var armViews = new List<ArmView>();
-        var commandColumns = new List<(int Arm, int Column)>();
-        for (var a = 0; a < commands.Count; a++)
+        if (File.Messages([Signals]).FirstOrDefault() is { } first)
         {
-            var (arm, table) = commands[a];
-            var joints = table.Columns.Where(c => c.StartsWith("setpoint_rad.", StringComparison.Ordinal)).Select(c => c["setpoint_rad.".Length..]).ToList();
-            foreach (var joint in joints)
+            using var doc = JsonDocument.Parse(first.Data);
+            Leaves(doc.RootElement, string.Empty, Names);
+        }
+
+        SignalCount = Names.Count;
+        var arms = (Meta.GetValueOrDefault("arms") ?? string.Empty).Split(',', StringSplitOptions.RemoveEmptyEntries);
+        var armViews = new List<ArmView>();
+        foreach (var arm in arms)
+        {
+            if (File.Channel(RecordingTopics.Joints(arm)) is not { } channel)
             {
-                Names.Add(RingRecorder.CommandSignal(arm, joint));
-                commandColumns.Add((a, table.Columns.ToList().IndexOf("setpoint_rad." + joint)));
+                continue;
             }
 
+            var joints = new List<string>();
+            if (File.Messages([channel.Id]).FirstOrDefault() is { } message)
+            {
+                using var doc = JsonDocument.Parse(message.Data);
+                joints.AddRange(doc.RootElement.GetProperty("setpoint_rad").EnumerateObject().Select(p => p.Name));
+            }
+
+            Joints.Add(channel.Id);
+            JointCounts.Add(joints.Count);
+            Names.AddRange(joints.Select(j => RingRecorder.CommandSignal(arm, j)));
             armViews.Add(new ArmView(arm, [.. joints.Select(j => UrdfExport.JointName(arm, j))], [.. joints.Select(j => RingRecorder.PositionSignal(arm, j))], [.. joints.Select(j => RingRecorder.CommandSignal(arm, j))]));
         }
 
-        var urdf = Contents.Attachments.FirstOrDefault(p => p.Key.EndsWith(".urdf", StringComparison.Ordinal)).Value ?? string.Empty;
+        var urdf = File.Attachments.FirstOrDefault(p => p.Key.EndsWith(".urdf", StringComparison.Ordinal)).Value ?? string.Empty;
         Model = new RobotModelView(urdf, armViews);
-        var jointTimes = commands.Select(c => c.Table.Rows.Select(r => Number(r[0])).ToList()).ToList();
-        var cursor = new int[commands.Count];
-        foreach (var row in signals.Rows)
-        {
-            var t = Number(row[0]);
-            var values = new double[Names.Count];
-            for (var i = 1; i < signals.Columns.Count; i++)
-            {
-                values[i - 1] = i < row.Length ? Number(row[i]) : double.NaN;
-            }
-
-            for (var a = 0; a < commands.Count; a++)
-            {
-                while (cursor[a] + 1 < jointTimes[a].Count && jointTimes[a][cursor[a] + 1] <= t)
-                {
-                    cursor[a]++; // the commanded joints recorded at or before this row
-                }
-            }
-
-            var at = signals.Columns.Count - 1;
-            foreach (var (arm, column) in commandColumns)
-            {
-                var rows = commands[arm].Table.Rows;
-                values[at++] = rows.Count == 0 ? double.NaN : Number(rows[cursor[arm]][column]);
-            }
-
-            Times.Add(t);
-            Rows.Add(values);
-        }
-
-        foreach (var row in Table(RecordingTopics.RunLevel))
-        {
-            Levels.Add((Number(row["time_s"]), Text(row["to"])));
-            Timeline.Add((Number(row["time_s"]), Text(row["source"]), $"run level {Text(row["from"])} -> {Text(row["to"])}: {Text(row["reason"])}"));
-        }
-
-        foreach (var row in Table(RecordingTopics.Trips))
-        {
-            Timeline.Add((Number(row["time_s"]), "safety", $"trip: {Text(row["check"])} {Text(row["joint"])} measured {row["measured"]} {Text(row["unit"])} (limit {row["limit"]}), {Text(row["action"])}"));
-        }
-
-        Timeline.Sort((x, y) => x.Seconds.CompareTo(y.Seconds));
+        BuildTimeline();
     }
 
-    private IEnumerable<Dictionary<string, string>> Table(string topic)
+    private void BuildTimeline()
     {
-        if (!Contents.Channels.Values.Any(c => c.Topic == topic))
+        var levels = File.Channel(RecordingTopics.RunLevel)?.Id;
+        var trips = File.Channel(RecordingTopics.Trips)?.Id;
+        var commands = File.Channel(RecordingTopics.Operator)?.Id;
+        var wanted = new[] { levels, trips, commands }.OfType<ushort>().ToList();
+        foreach (var message in wanted.Count == 0 ? [] : File.Messages(wanted))
         {
-            yield break;
-        }
-
-        var table = CsvExport.Tabulate(Contents, topic);
-        foreach (var row in table.Rows)
-        {
-            yield return table.Columns.Select((c, i) => (c, i)).ToDictionary(p => p.c, p => p.i < row.Length ? row[p.i] ?? string.Empty : string.Empty);
+            var t = Seconds(message.LogTimeNs);
+            using var doc = JsonDocument.Parse(message.Data);
+            var e = doc.RootElement;
+            if (message.ChannelId == levels)
+            {
+                Levels.Add((t, Text(e, "to")));
+                Timeline.Add((t, Text(e, "source"), $"run level {Text(e, "from")} -> {Text(e, "to")}: {Text(e, "reason")}"));
+            }
+            else if (message.ChannelId == trips)
+            {
+                Timeline.Add((t, "safety", $"trip: {Text(e, "check")} {Text(e, "joint")} measured {Text(e, "measured")} {Text(e, "unit")} (limit {Text(e, "limit")}), {Text(e, "action")}"));
+            }
+            else
+            {
+                Timeline.Add((t, Text(e, "who"), Text(e, "what")));
+            }
         }
     }
 
-    private static double Number(string? text) =>
-        text is null ? double.NaN : double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var v) ? v : double.NaN;
+    /// <summary>The names of <paramref name="e"/>'s leaves, as the CSV export names its columns (<c>instance.port</c>).</summary>
+    private static void Leaves(JsonElement e, string prefix, List<string> names)
+    {
+        if (e.ValueKind != JsonValueKind.Object)
+        {
+            names.Add(prefix);
+            return;
+        }
 
-    private static string Text(string quoted) => quoted.Length >= 2 && quoted[0] == '"' ? quoted[1..^1].Replace("\"\"", "\"", StringComparison.Ordinal) : quoted;
+        foreach (var p in e.EnumerateObject())
+        {
+            Leaves(p.Value, prefix.Length == 0 ? p.Name : $"{prefix}.{p.Name}", names);
+        }
+    }
+
+    private static string Text(JsonElement e, string name) => !e.TryGetProperty(name, out var v) ? "?" : v.ValueKind switch
+    {
+        JsonValueKind.String => v.GetString()!,
+        JsonValueKind.Number => v.GetDouble().ToString("R", CultureInfo.InvariantCulture),
+        JsonValueKind.Null => "NaN",
+        _ => v.GetRawText(),
+    };
 }

@@ -6,9 +6,11 @@ namespace RobotControl.WebConsole.Replay;
 /// <summary>
 /// The console's pages served from a recording (<c>robotctl console --replay file.mcap</c>): no robot. A playback
 /// clock (on an injected <see cref="TimeProvider"/>) moves through the recording at 0.25x to 4x; <see cref="Pump"/>
-/// appends the rows recorded up to the playback position to the plots' ring, so the plots and the 3D view show them as
-/// they showed the live session; the status page shows the run level at that time and the trips so far, and the
-/// event log the run-level transitions and trips up to it. Every robot command is refused.
+/// appends the rows recorded up to the playback position to the plots' ring (read from the file as the playback reaches
+/// them, <see cref="ReplayRows"/>), so the plots and the 3D view show them as they showed the live session; the status
+/// page shows the run level at that time and the trips so far, and the event log the run-level transitions, trips and
+/// operator commands up to it. A chunk found damaged on the way pauses the playback there and says so. Every robot
+/// command is refused.
 /// </summary>
 public sealed class ReplaySession : IConsoleSession
 {
@@ -17,6 +19,7 @@ public sealed class ReplaySession : IConsoleSession
 
     private const string Refusal = "a replay: no robot to command";
     private readonly ReplayData _data;
+    private readonly ReplayRows _rows;
     private readonly TimeProvider _time;
     private readonly string _file;
     private readonly Lock _gate = new();
@@ -25,7 +28,6 @@ public sealed class ReplaySession : IConsoleSession
     private double _position;
     private double _rate = 1;
     private bool _playing = true;
-    private int _next;
     private volatile SessionStatus _status;
 
     /// <summary>Opens <paramref name="path"/>; with <paramref name="pumpEvery"/>, a timer pumps the ring at that interval.</summary>
@@ -35,11 +37,12 @@ public sealed class ReplaySession : IConsoleSession
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(time);
         _data = ReplayData.Load(path);
+        _rows = new ReplayRows(_data);
         _time = time;
         _file = Path.GetFileName(path);
         Signals = new SignalRing(_data.Names, [.. _data.Names.Select(_ => string.Empty)], 16384);
         Model = _data.Model;
-        Truncated = _data.Contents.Truncated;
+        Truncated = _data.File.Truncated;
         _lastWall = time.GetTimestamp();
         _status = BuildStatus();
         _timer = pumpEvery is { } every ? time.CreateTimer(_ => Pump(), null, every, every) : null;
@@ -49,7 +52,10 @@ public sealed class ReplaySession : IConsoleSession
     public string? Truncated { get; }
 
     /// <summary>Length of the recording, seconds.</summary>
-    public double DurationSeconds => _data.Times.Count == 0 ? 0 : _data.Times[^1];
+    public double DurationSeconds => _data.DurationSeconds;
+
+    /// <summary>Where the file was found damaged during the playback (which paused there), or null.</summary>
+    public string? Damaged { get; private set; }
 
     /// <summary>The playback position, seconds from the start.</summary>
     public double PositionSeconds
@@ -103,7 +109,7 @@ public sealed class ReplaySession : IConsoleSession
     public void Seek(double seconds) => Control(() =>
     {
         _position = Math.Clamp(double.IsFinite(seconds) ? seconds : 0, 0, DurationSeconds);
-        _next = Math.Max(0, _data.Times.BinarySearch(_position) is var i && i >= 0 ? i : ~i - 1); // the row shown at the new position comes first
+        Read(() => _rows.Seek(_position)); // the row shown at the new position comes first
     });
 
     /// <summary>Moves the playback clock to now and appends the rows up to the position to the ring (the timer's work; tests call it).</summary>
@@ -112,12 +118,13 @@ public sealed class ReplaySession : IConsoleSession
         lock (_gate)
         {
             Advance();
-            while (_next < _data.Times.Count && _data.Times[_next] <= _position)
+            Read(() =>
             {
-                Signals.Append(_data.Times[_next], _data.Rows[_next]);
-                _next++;
-            }
-
+                while (_rows.TryNext(_position, out var time, out var row))
+                {
+                    Signals.Append(time, row);
+                }
+            });
             _status = BuildStatus();
         }
     }
@@ -193,7 +200,34 @@ public sealed class ReplaySession : IConsoleSession
     }
 
     /// <inheritdoc />
-    public void Dispose() => _timer?.Dispose();
+    public void Dispose()
+    {
+        _timer?.Dispose();
+        lock (_gate)
+        {
+            _rows.Dispose();
+            _data.Dispose();
+        }
+    }
+
+    /// <summary>Runs a read of the file; a damaged chunk pauses the playback where it is and is said once.</summary>
+    private void Read(Action read)
+    {
+        if (Damaged is not null)
+        {
+            return;
+        }
+
+        try
+        {
+            read();
+        }
+        catch (InvalidDataException ex)
+        {
+            Damaged = $"{ex.Message}; the replay paused at {_position.ToString("F3", CultureInfo.InvariantCulture)} s";
+            _playing = false;
+        }
+    }
 
     private void Control(Action change)
     {
@@ -221,7 +255,7 @@ public sealed class ReplaySession : IConsoleSession
         var level = _data.Levels.LastOrDefault(l => l.Seconds <= _position).Level ?? "INIT";
         var trips = _data.Timeline.Where(e => e.Seconds <= _position && e.Message.StartsWith("trip: ", StringComparison.Ordinal)).Select(e => e.Message).ToList();
         var rate = double.TryParse(_data.Meta.GetValueOrDefault("loop_rate_hz"), NumberStyles.Float, CultureInfo.InvariantCulture, out var hz) ? hz : 0;
-        var state = string.Create(CultureInfo.InvariantCulture, $"replay {(_playing ? "playing" : "paused")} at {_rate:0.##}x, {_position:F3} of {DurationSeconds:F3} s");
+        var state = Damaged ?? string.Create(CultureInfo.InvariantCulture, $"replay {(_playing ? "playing" : "paused")} at {_rate:0.##}x, {_position:F3} of {DurationSeconds:F3} s");
         return new SessionStatus(
             _data.Meta.GetValueOrDefault("robot") ?? "?",
             _data.Meta.GetValueOrDefault("graph") ?? "?",
@@ -229,7 +263,7 @@ public sealed class ReplaySession : IConsoleSession
             0,
             0,
             rate,
-            _next,
+            _rows.Count,
             0,
             0,
             0,

@@ -7,100 +7,160 @@ namespace RobotControl.Host.Recording;
 
 /// <summary>
 /// A recording as CSV, for MATLAB and pandas: one table per topic, a <c>time_s</c> column (seconds from the start of
-/// the recording) and one column per leaf of the JSON messages, named by its path (<c>position_rad.q1</c>,
+/// the recording) and one column per leaf of the JSON messages (in the order they first appear), named by its path (<c>position_rad.q1</c>,
 /// <c>transforms.0.translation.x</c>); booleans as 1/0, null (a value that was not finite) as NaN.
 /// </summary>
 public static class CsvExport
 {
     /// <summary>The recording's start (ns): its <c>robotcontrol</c> metadata, else its first message.</summary>
-    public static ulong StartNs(McapContents contents)
+    public static ulong StartNs(McapFile file)
     {
-        ArgumentNullException.ThrowIfNull(contents);
-        return contents.Metadata.TryGetValue("robotcontrol", out var meta) && meta.TryGetValue("start_unix_ns", out var text) && ulong.TryParse(text, CultureInfo.InvariantCulture, out var start)
+        ArgumentNullException.ThrowIfNull(file);
+        return file.Metadata.TryGetValue("robotcontrol", out var meta) && meta.TryGetValue("start_unix_ns", out var text) && ulong.TryParse(text, CultureInfo.InvariantCulture, out var start)
             ? start
-            : contents.Messages.Count == 0 ? 0 : contents.Messages.Min(m => m.LogTimeNs);
+            : file.StartNs;
     }
 
     /// <summary>The file name of <paramref name="topic"/>'s table (<c>/arms/right/joints</c> → <c>arms_right_joints.csv</c>).</summary>
     public static string FileName(string topic) => topic.Trim('/').Replace('/', '_') + ".csv";
 
-    /// <summary>One topic's messages as rows of named values, in file order (time first).</summary>
-    public static Table Tabulate(McapContents contents, string topic)
+    /// <summary>One topic's messages as rows of named values, in log-time order (time first), held in memory: for a test or a short file.</summary>
+    /// <exception cref="ArgumentException">No such topic.</exception>
+    public static Table Tabulate(McapFile file, string topic)
     {
-        ArgumentNullException.ThrowIfNull(contents);
-        var channel = contents.Channels.Values.FirstOrDefault(c => c.Topic == topic) ?? throw new ArgumentException($"no topic {topic}", nameof(topic));
-        var start = StartNs(contents);
-        var columns = new List<string> { "time_s" };
-        var index = new Dictionary<string, int>(StringComparer.Ordinal) { ["time_s"] = 0 };
-        var rows = new List<string[]>();
-        foreach (var message in contents.Messages.Where(m => m.ChannelId == channel.Id))
+        ArgumentNullException.ThrowIfNull(file);
+        var channel = file.Channel(topic) ?? throw new ArgumentException($"no topic {topic}", nameof(topic));
+        var columns = new Columns();
+        var rows = new List<string?[]>();
+        foreach (var message in file.Messages([channel.Id]))
         {
-            var values = new Dictionary<int, string> { [0] = ((long)(message.LogTimeNs - start) / 1e9).ToString("R", CultureInfo.InvariantCulture) };
+            rows.Add(columns.Row(message, StartNs(file)));
+        }
+
+        return new Table(columns.Names, rows);
+    }
+
+    /// <summary>
+    /// Writes <paramref name="topics"/> (null: every topic) of <paramref name="file"/> into <paramref name="directory"/>
+    /// in one pass through the file, a chunk at a time, so a file of any size is exported in bounded memory; each CSV is
+    /// written beside its final name and moved there when whole. Returns the files written and the rows in them.
+    /// </summary>
+    /// <exception cref="ArgumentException">A topic the file does not have (the message lists those it has).</exception>
+    public static (IReadOnlyList<string> Files, long Rows) Write(McapFile file, string directory, IReadOnlyList<string>? topics = null)
+    {
+        ArgumentNullException.ThrowIfNull(file);
+        var known = file.Channels.Values.OrderBy(c => c.Id).Select(c => c.Topic).ToList();
+        var unknown = topics?.Where(t => !known.Contains(t)).ToList() ?? [];
+        if (unknown.Count > 0)
+        {
+            throw new ArgumentException($"--topics: {Path.GetFileName(file.Path)} has no topic {string.Join(", ", unknown)} (it has {string.Join(", ", known)})");
+        }
+
+        Directory.CreateDirectory(directory);
+        var start = StartNs(file);
+        var tables = (topics ?? known).Distinct().ToDictionary(t => file.Channel(t)!.Id, t => new TopicCsv(Path.Combine(directory, FileName(t))));
+        long rows = 0;
+        try
+        {
+            foreach (var message in file.Messages(tables.Keys))
+            {
+                tables[message.ChannelId].Add(message, start);
+                rows++;
+            }
+
+            return ([.. tables.Values.Select(t => t.Finish())], rows);
+        }
+        finally
+        {
+            foreach (var table in tables.Values)
+            {
+                table.Dispose();
+            }
+        }
+    }
+
+    /// <summary>The columns of one topic's table, in the order their leaves first appear.</summary>
+    private sealed class Columns
+    {
+        private readonly Dictionary<string, int> _index = new(StringComparer.Ordinal) { ["time_s"] = 0 };
+
+        public List<string> Names { get; } = ["time_s"];
+
+        /// <summary>The cells of <paramref name="message"/> (time first), by column; a column it lacks is null.</summary>
+        public string?[] Row(McapMessage message, ulong startNs)
+        {
+            var values = new List<(int Column, string Value)> { (0, ((long)(message.LogTimeNs - startNs) / 1e9).ToString("R", CultureInfo.InvariantCulture)) };
             using var doc = JsonDocument.Parse(message.Data);
             Flatten(doc.RootElement, string.Empty, (name, value) =>
             {
-                if (!index.TryGetValue(name, out var i))
+                if (!_index.TryGetValue(name, out var i))
                 {
-                    index[name] = i = columns.Count;
-                    columns.Add(name);
+                    _index[name] = i = Names.Count;
+                    Names.Add(name);
                 }
 
-                values[i] = value;
+                values.Add((i, value));
             });
-            var row = new string[columns.Count];
+            var row = new string?[Names.Count];
             foreach (var (i, value) in values)
             {
                 row[i] = value;
             }
 
-            rows.Add(row);
+            return row;
         }
-
-        return new Table(columns, rows);
     }
 
-    /// <summary>Writes <paramref name="topics"/> (null: every topic) of <paramref name="contents"/> into <paramref name="directory"/>; returns the files written.</summary>
-    /// <exception cref="ArgumentException">A topic the file does not have (the message lists those it has).</exception>
-    public static IReadOnlyList<string> Write(McapContents contents, string directory, IReadOnlyList<string>? topics = null)
+    /// <summary>One topic's CSV being written: rows to a body file as they come, the header (every column seen) in front at the end.</summary>
+    private sealed class TopicCsv(string path) : IDisposable
     {
-        ArgumentNullException.ThrowIfNull(contents);
-        var known = contents.Channels.Values.Select(c => c.Topic).ToList();
-        var unknown = topics?.Where(t => !known.Contains(t)).ToList() ?? [];
-        if (unknown.Count > 0)
-        {
-            throw new ArgumentException($"--topics: {Path.GetFileName(contents.Path)} has no topic {string.Join(", ", unknown)} (it has {string.Join(", ", known)})");
-        }
+        private readonly Columns _columns = new();
+        private readonly string _body = path + ".rows.tmp";
+        private StreamWriter? _writer;
 
-        Directory.CreateDirectory(directory);
-        var written = new List<string>();
-        foreach (var topic in topics ?? known)
+        public void Add(McapMessage message, ulong startNs)
         {
-            var table = Tabulate(contents, topic);
-            var path = Path.Combine(directory, FileName(topic));
-            var text = new StringBuilder();
-            text.AppendLine(string.Join(',', table.Columns));
-            foreach (var row in table.Rows)
+            _writer ??= new StreamWriter(_body, append: false, new UTF8Encoding(false), 1 << 16);
+            var row = _columns.Row(message, startNs);
+            for (var i = 0; i < row.Length; i++)
             {
-                for (var i = 0; i < table.Columns.Count; i++)
+                if (i > 0)
                 {
-                    if (i > 0)
-                    {
-                        text.Append(',');
-                    }
-
-                    text.Append(i < row.Length ? row[i] : string.Empty);
+                    _writer.Write(',');
                 }
 
-                text.AppendLine();
+                _writer.Write(row[i]);
             }
 
-            var temporary = path + ".tmp";
-            File.WriteAllText(temporary, text.ToString());
-            File.Move(temporary, path, overwrite: true);
-            written.Add(path);
+            _writer.Write('\n');
         }
 
-        return written;
+        public string Finish()
+        {
+            var temporary = path + ".tmp";
+            using (var output = new FileStream(temporary, FileMode.Create, FileAccess.Write))
+            {
+                output.Write(Encoding.UTF8.GetBytes(string.Join(',', _columns.Names) + "\n"));
+                if (_writer is not null)
+                {
+                    _writer.Dispose();
+                    _writer = null;
+                    using var body = File.OpenRead(_body);
+                    body.CopyTo(output);
+                }
+            }
+
+            File.Move(temporary, path, overwrite: true);
+            File.Delete(_body);
+            return path;
+        }
+
+        public void Dispose()
+        {
+            _writer?.Dispose();
+            File.Delete(_body);
+            File.Delete(path + ".tmp");
+        }
     }
 
     private static void Flatten(JsonElement e, string prefix, Action<string, string> add)

@@ -84,7 +84,7 @@ public sealed class ReplaySessionTests(ReplaySessionTests.Recorded recorded) : I
     private void AssertRingAt(ReplaySession replay, string position, string command, double t)
     {
         var slice = replay.Signals.Read(0, [replay.Signals.IndexOf(position), replay.Signals.IndexOf(command)], int.MaxValue);
-        var contents = McapReader.Read(recorded.Path);
+        using var contents = McapFile.Open(recorded.Path);
         var signals = CsvExport.Tabulate(contents, RecordingTopics.Signals);
         var row = signals.Rows.Last(r => Seconds(r[0]) <= t + 1e-12);
         Assert.Equal(Seconds(row[0]), slice.Times[^1], 12);

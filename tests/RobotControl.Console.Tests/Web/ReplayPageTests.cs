@@ -44,7 +44,8 @@ public sealed class ReplayPageTests
     /// <summary>The recording's value of <paramref name="signal"/> at the last row at or before <paramref name="t"/>, as the page prints it (6 decimals).</summary>
     private static string Expected(string file, string signal, double t)
     {
-        var table = CsvExport.Tabulate(McapReader.Read(file), RecordingTopics.Signals);
+        using var recording = McapFile.Open(file);
+        var table = CsvExport.Tabulate(recording, RecordingTopics.Signals);
         var row = table.Rows.Last(r => double.Parse(r[0]!, CultureInfo.InvariantCulture) <= t + 1e-12);
         return double.Parse(row[table.Columns.ToList().IndexOf(signal)]!, CultureInfo.InvariantCulture).ToString("F6", CultureInfo.InvariantCulture);
     }

@@ -39,7 +39,7 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
     [Fact]
     public void The_csv_export_reproduces_the_reports_tracking_rms_and_max_to_a_tenth_of_a_percent()
     {
-        var contents = McapReader.Read(job.Path);
+        using var contents = McapFile.Open(job.Path);
         var chain = new KinematicChain(ShippedRobots.Lb);
         var commanded = chain.CreateState();
         var reported = chain.CreateState();
@@ -93,9 +93,9 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
         var line = Assert.Single(told);
         Assert.Equal($"recording stopped: {path}: No space left on device; the run goes on", line);
         Assert.Equal(line, report.Recording!.Stopped);
-        var cut = McapReader.Read(path);
+        using var cut = McapFile.Open(path);
         Assert.NotNull(cut.Truncated);
-        Assert.NotEmpty(cut.Messages); // what reached the disk, up to the last complete chunk
+        Assert.NotEmpty(cut.Messages()); // what reached the disk, up to the last complete chunk
     }
 
     [Fact]
@@ -122,9 +122,9 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
 
         Assert.True(measured > 1000, $"{measured} ticks measured");
         Assert.Equal(0, allocated);
-        var recorded = McapReader.Read(path);
+        using var recorded = McapFile.Open(path);
         var joints = recorded.Channels.Values.Single(c => c.Topic == "/arms/right/joints").Id;
-        Assert.Equal(2000, recorded.Messages.Count(m => m.ChannelId == joints)); // the tap was on every tick measured
+        Assert.Equal(2000, recorded.Messages([joints]).Count()); // the tap was on every tick measured
     }
 
     private static int Column(CsvExport.Table table, string name)

@@ -30,36 +30,45 @@ internal sealed class ExportCommand : ICliCommand
         return command;
     }
 
-    /// <summary>Runs the command; returns the exit code (0 ok, 2 bad input).</summary>
-    internal static int Run(string path, string directory, IReadOnlyList<string> topics, TextWriter output, TextWriter error)
+    /// <summary>Opens <paramref name="path"/>, saying in one line why it cannot be read, or that it was cut short; null when it cannot be read.</summary>
+    private static McapFile? OpenOrSay(string path, TextWriter error)
     {
-        if (!File.Exists(path))
-        {
-            error.WriteLine($"{path}: no such file");
-            return 2;
-        }
-
-        McapContents contents;
         try
         {
-            contents = McapReader.Read(path);
+            var file = McapFile.Open(path);
+            if (file.Truncated is { } truncated)
+            {
+                error.WriteLine(truncated);
+            }
+
+            return file;
         }
         catch (InvalidDataException ex)
         {
             error.WriteLine(ex.Message);
-            return 2;
+            return null;
         }
+    }
 
-        if (contents.Truncated is { } truncated)
+    /// <summary>Runs the command; returns the exit code (0 ok, 2 bad input).</summary>
+    internal static int Run(string path, string directory, IReadOnlyList<string> topics, TextWriter output, TextWriter error)
+    {
+        using var file = OpenOrSay(path, error);
+        if (file is null)
         {
-            error.WriteLine(truncated);
+            return 2;
         }
 
         try
         {
-            var files = CsvExport.Write(contents, directory, topics.Count == 0 ? null : topics);
-            output.WriteLine($"{Path.GetFileName(path)}: {contents.Messages.Count} messages, {files.Count} CSV files in {directory}");
+            var (files, rows) = CsvExport.Write(file, directory, topics.Count == 0 ? null : topics);
+            output.WriteLine($"{Path.GetFileName(path)}: {rows} messages, {files.Count} CSV files in {directory}");
             return 0;
+        }
+        catch (InvalidDataException ex)
+        {
+            error.WriteLine($"{ex.Message}; no CSV file was replaced");
+            return 2;
         }
         catch (ArgumentException ex)
         {

@@ -34,9 +34,11 @@ public sealed class McapWriterTests
         Assert.Equal(0, check.BadJson);
         Assert.True(check.Chunks > 3, $"{check.Chunks} chunks");
         Assert.Equal(["robot.json"], check.Attachments);
-        var own = McapReader.Read(path);
+        using var own = McapFile.Open(path);
         Assert.True(own.Complete);
-        Assert.Equal(counts, own.Messages.GroupBy(m => own.Channels[m.ChannelId].Topic).ToDictionary(g => g.Key, g => (long)g.Count()));
+        Assert.True(own.Indexed);
+        Assert.Equal(counts, own.Messages().GroupBy(m => own.Channels[m.ChannelId].Topic).ToDictionary(g => g.Key, g => (long)g.Count()));
+        Assert.Equal(counts, own.MessageCounts.ToDictionary(p => own.Channels[p.Key].Topic, p => (long)p.Value));
         Assert.Equal("{\"arm\":\"right\"}", own.Attachments["robot.json"]);
         Assert.Equal("1", own.Metadata["run"]["seed"]);
     }
@@ -51,12 +53,14 @@ public sealed class McapWriterTests
         File.WriteAllBytes(path, bytes[..(int)(end + 100)]); // 100 bytes into the fourth chunk
 
         var check = McapCheck.Read(path);
-        var own = McapReader.Read(path);
+        using var own = McapFile.Open(path);
 
         Assert.Null(check.Error);
         Assert.False(check.Complete);
         Assert.Equal(messagesBefore, check.StreamCounts.Values.Sum());
-        Assert.Equal(messagesBefore, own.Messages.Count);
+        Assert.Equal(messagesBefore, own.Messages().LongCount());
+        Assert.Equal(messagesBefore, (long)own.MessageCount);
+        Assert.False(own.Indexed);
         Assert.False(own.Complete);
         Assert.Contains("cut short", own.Truncated, StringComparison.Ordinal);
     }
@@ -71,7 +75,8 @@ public sealed class McapWriterTests
         File.WriteAllBytes(path, bytes);
 
         Assert.Contains("Incorrect chunk CRC", McapCheck.Read(path).Error, StringComparison.Ordinal);
-        var ex = Assert.Throws<InvalidDataException>(() => McapReader.Read(path));
+        using var damaged = McapFile.Open(path); // opened by its summary: the chunk is checked when it is read
+        var ex = Assert.Throws<InvalidDataException>(() => damaged.Messages().Count());
         Assert.Contains("CRC", ex.Message, StringComparison.Ordinal);
     }
 
@@ -81,7 +86,7 @@ public sealed class McapWriterTests
         var path = Temp("report.json");
         File.WriteAllText(path, "{\"ticks\": 1}");
 
-        var ex = Assert.Throws<InvalidDataException>(() => McapReader.Read(path));
+        var ex = Assert.Throws<InvalidDataException>(() => McapFile.Open(path));
 
         Assert.Equal($"{path}: not an MCAP file (it does not start with the MCAP magic)", ex.Message);
     }
