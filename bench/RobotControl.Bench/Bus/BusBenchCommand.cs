@@ -29,10 +29,10 @@ internal sealed class BusBenchCommand : IBenchCommand
 
     public int Run(string[] args)
     {
-        var robotPath = Arg(args, "--robot") ?? "hardware/robots/lb-1.0.json";
-        var seconds = double.Parse(Arg(args, "--seconds") ?? "2", CultureInfo.InvariantCulture);
-        var repeats = int.Parse(Arg(args, "--repeats") ?? "5", CultureInfo.InvariantCulture);
-        var outFile = Arg(args, "--out");
+        var robotPath = BenchArgs.Value(args, "--robot") ?? "hardware/robots/lb-1.0.json";
+        var seconds = double.Parse(BenchArgs.Value(args, "--seconds") ?? "2", CultureInfo.InvariantCulture);
+        var repeats = int.Parse(BenchArgs.Value(args, "--repeats") ?? "5", CultureInfo.InvariantCulture);
+        var outFile = BenchArgs.Value(args, "--out");
         var robot = RobotLoader.Load(robotPath);
         var results = new List<object>();
         Console.WriteLine($"{robot.Name}: {robot.Modules.Modules.Count} modules, {robot.Modules.Modules.Sum(m => m.Motors.Count)} motors; {seconds} s simulated per run, {repeats} runs, medians");
@@ -119,11 +119,6 @@ internal sealed class BusBenchCommand : IBenchCommand
         return v.Length % 2 == 1 ? v[v.Length / 2] : 0.5 * (v[(v.Length / 2) - 1] + v[v.Length / 2]);
     }
 
-    private static string? Arg(string[] args, string name)
-    {
-        var i = Array.IndexOf(args, name);
-        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
-    }
 
     private sealed record RunResult(double CyclesPerSecond, double BoundPerSecond, double BytesPerCycle, double HostMicros, double SimMicros, double AllocPerCycle, double ThreadCpuMicros, double HostCpuMicros);
 }

@@ -28,10 +28,10 @@ internal sealed class CoppeliaSimBenchCommand : IBenchCommand
 
     public int Run(string[] args)
     {
-        var robotPath = Path.GetFullPath(Arg(args, "--robot") ?? "hardware/robots/lb-1.0.json");
-        var seconds = double.Parse(Arg(args, "--seconds") ?? "3", CultureInfo.InvariantCulture);
-        var ticksPerStep = int.Parse(Arg(args, "--ticks-per-step") ?? "10", CultureInfo.InvariantCulture);
-        var repeats = int.Parse(Arg(args, "--repeats") ?? "3", CultureInfo.InvariantCulture);
+        var robotPath = Path.GetFullPath(BenchArgs.Value(args, "--robot") ?? "hardware/robots/lb-1.0.json");
+        var seconds = double.Parse(BenchArgs.Value(args, "--seconds") ?? "3", CultureInfo.InvariantCulture);
+        var ticksPerStep = int.Parse(BenchArgs.Value(args, "--ticks-per-step") ?? "10", CultureInfo.InvariantCulture);
+        var repeats = int.Parse(BenchArgs.Value(args, "--repeats") ?? "3", CultureInfo.InvariantCulture);
         var robot = RobotLoader.Load(robotPath);
         var paths = robot.Arms.SelectMany(a => robot.Joints.Select(j => $"/LB1/{a.Name}_{j.Name}")).ToList();
 
@@ -48,7 +48,7 @@ internal sealed class CoppeliaSimBenchCommand : IBenchCommand
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"loop with bridge (stepping, 1 step per {ticksPerStep} ticks): p50 {with.P50Us:F1} us, p99 {with.P99Us:F1} us, max {with.MaxUs:F0} us, misses {with.Misses}, {with.Ticks} ticks, {with.Steps} steps ({with.TicksPerStep:F2} ticks/step)"));
         }
 
-        var json = Arg(args, "--json");
+        var json = BenchArgs.Value(args, "--json");
         if (json is not null)
         {
             File.WriteAllText(json, JsonSerializer.Serialize(new { robot = robot.Name, seconds, ticksPerStep, roundTripsPerSecond = roundTrips, roundTripsMedian = Median(roundTrips), loops }, JsonOptions));
@@ -99,11 +99,6 @@ internal sealed class CoppeliaSimBenchCommand : IBenchCommand
         return sorted.Count % 2 == 1 ? sorted[sorted.Count / 2] : 0.5 * (sorted[(sorted.Count / 2) - 1] + sorted[sorted.Count / 2]);
     }
 
-    private static string? Arg(string[] args, string name)
-    {
-        var i = Array.IndexOf(args, name);
-        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
-    }
 
     private sealed record LoopResult(double P50Us, double P99Us, double MaxUs, long Misses, long Ticks, long Steps, double TicksPerStep);
 }

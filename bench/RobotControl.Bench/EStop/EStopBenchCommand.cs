@@ -36,9 +36,9 @@ internal sealed class EStopBenchCommand : IBenchCommand
             return 2;
         }
 
-        var graph = RealtimeBenchCommand.Arg(args, "--graph") ?? "graphs/teleop-lb.json";
-        var scenarios = (RealtimeBenchCommand.Arg(args, "--scenarios") ?? string.Join(',', Scenarios)).Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
-        var safeState = RealtimeBenchCommand.Arg(args, "--safe-state") ?? "torque_off";
+        var graph = BenchArgs.Value(args, "--graph") ?? "graphs/teleop-lb.json";
+        var scenarios = (BenchArgs.Value(args, "--scenarios") ?? string.Join(',', Scenarios)).Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
+        var safeState = BenchArgs.Value(args, "--safe-state") ?? "torque_off";
         string?[] integers =
         [
             Integer(args, "--stops", 200, 1, 100_000, out var stops),
@@ -58,7 +58,7 @@ internal sealed class EStopBenchCommand : IBenchCommand
         }
 
         var settings = new EStopSettings(stops, settleMs, queued, floodRate, floodClients);
-        var outFile = RealtimeBenchCommand.Arg(args, "--out");
+        var outFile = BenchArgs.Value(args, "--out");
         var command = $"dotnet run -c Release --project bench/RobotControl.Bench -- estop --graph {graph} --stops {stops} --scenarios {string.Join(',', scenarios)} --safe-state {safeState} --settle-ms {settleMs} --queued {queued} --flood-rate {floodRate} --flood-clients {floodClients}" + (outFile is null ? string.Empty : $" --out {outFile}");
         Console.WriteLine(command);
         var (results, failures) = RunAll(graph, safeState, scenarios, settings).GetAwaiter().GetResult();
@@ -168,7 +168,7 @@ internal sealed class EStopBenchCommand : IBenchCommand
     /// <summary>Reads an integer option in [<paramref name="min"/>, <paramref name="max"/>]; returns the problem, or null.</summary>
     private static string? Integer(string[] args, string option, int fallback, int min, int max, out int value)
     {
-        var text = RealtimeBenchCommand.Arg(args, option);
+        var text = BenchArgs.Value(args, option);
         value = fallback;
         return text is null || (int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out value) && value >= min && value <= max)
             ? null

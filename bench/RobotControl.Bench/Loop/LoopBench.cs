@@ -20,9 +20,9 @@ internal sealed class LoopBench : IBenchCommand
 
     public int Run(string[] args)
     {
-        var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
-        var duration = RunDuration.Parse(Arg(args, "--duration") ?? "20s");
-        var outPath = Arg(args, "--out") ?? "docs/perf/loop.md";
+        var graph = BenchArgs.Value(args, "--graph") ?? "graphs/teleop-lb.json";
+        var duration = RunDuration.Parse(BenchArgs.Value(args, "--duration") ?? "20s");
+        var outPath = BenchArgs.Value(args, "--out") ?? "docs/perf/loop.md";
         var catalog = ShippedPlugins.Catalog();
         var c = CultureInfo.InvariantCulture;
 
@@ -141,11 +141,5 @@ internal sealed class LoopBench : IBenchCommand
     {
         var sorted = values.Order().ToList();
         return sorted.Count == 0 ? 0 : sorted[Math.Min(sorted.Count - 1, (int)Math.Ceiling(p * sorted.Count) - 1)];
-    }
-
-    private static string? Arg(string[] args, string name)
-    {
-        var i = Array.IndexOf(args, name);
-        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
     }
 }

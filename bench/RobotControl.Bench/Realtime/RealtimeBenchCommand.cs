@@ -18,7 +18,8 @@ namespace RobotControl.Bench.Realtime;
 /// jitter p50/p99/p99.9/max, bus cycle period distribution, late replies, CRC errors, timeouts, retries, safety trips,
 /// tracking RMS/max next to the virtual-clock run of the same graph, and bytes allocated per tick. Scenarios:
 /// <c>idle</c> (default GC latency mode), <c>idle-sll</c> (<see cref="GCLatencyMode.SustainedLowLatency"/>),
-/// <c>busy</c> (SustainedLowLatency, one core kept busy by <c>stress-ng --cpu 1</c>). Before each scenario,
+/// <c>busy</c> (SustainedLowLatency, one core kept busy by <c>stress-ng --cpu 1</c>), <c>record</c> (as idle-sll, the
+/// session recorded to MCAP, <c>--record</c>, zstd; alternate it with idle-sll to compare side by side). Before each scenario,
 /// <see cref="PlatformFloor"/> measures what the machine allows any SCHED_FIFO thread (cyclictest), and the hypervisor's
 /// steal is counted over the run.
 /// </summary>
@@ -41,22 +42,22 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
             return 2;
         }
 
-        var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
-        var robot = Arg(args, "--robot") ?? "hardware/robots/lb-1.0.json";
-        var seconds = double.Parse(Arg(args, "--seconds") ?? "600", CultureInfo.InvariantCulture);
-        var scenarios = (Arg(args, "--scenarios") ?? "idle,idle-sll,busy").Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
-        var priority = int.Parse(Arg(args, "--rt-priority") ?? "0", CultureInfo.InvariantCulture);
-        var simPriority = int.Parse(Arg(args, "--sim-rt-priority") ?? "0", CultureInfo.InvariantCulture);
-        int? cpu = Arg(args, "--cpu") is { } c ? int.Parse(c, CultureInfo.InvariantCulture) : null;
-        var outFile = Arg(args, "--out");
-        int? baud = Arg(args, "--baud") is { } b ? int.Parse(b, CultureInfo.InvariantCulture) : null;
-        var floorDuring = Arg(args, "--floor-during") ?? "no";
-        var cpuLatency = Arg(args, "--cpu-latency") ?? "hold";
-        var floorTime = TimeSpan.FromSeconds(double.Parse(Arg(args, "--floor-seconds") ?? "10", CultureInfo.InvariantCulture));
-        if (!double.IsFinite(seconds) || seconds is < 1 or > 86_400 || scenarios.Any(s => s is not ("idle" or "idle-sll" or "busy"))
+        var graph = BenchArgs.Value(args, "--graph") ?? "graphs/teleop-lb.json";
+        var robot = BenchArgs.Value(args, "--robot") ?? "hardware/robots/lb-1.0.json";
+        var seconds = double.Parse(BenchArgs.Value(args, "--seconds") ?? "600", CultureInfo.InvariantCulture);
+        var scenarios = (BenchArgs.Value(args, "--scenarios") ?? "idle,idle-sll,busy").Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
+        var priority = int.Parse(BenchArgs.Value(args, "--rt-priority") ?? "0", CultureInfo.InvariantCulture);
+        var simPriority = int.Parse(BenchArgs.Value(args, "--sim-rt-priority") ?? "0", CultureInfo.InvariantCulture);
+        int? cpu = BenchArgs.Value(args, "--cpu") is { } c ? int.Parse(c, CultureInfo.InvariantCulture) : null;
+        var outFile = BenchArgs.Value(args, "--out");
+        int? baud = BenchArgs.Value(args, "--baud") is { } b ? int.Parse(b, CultureInfo.InvariantCulture) : null;
+        var floorDuring = BenchArgs.Value(args, "--floor-during") ?? "no";
+        var cpuLatency = BenchArgs.Value(args, "--cpu-latency") ?? "hold";
+        var floorTime = TimeSpan.FromSeconds(double.Parse(BenchArgs.Value(args, "--floor-seconds") ?? "10", CultureInfo.InvariantCulture));
+        if (!double.IsFinite(seconds) || seconds is < 1 or > 86_400 || scenarios.Any(s => s is not ("idle" or "idle-sll" or "busy" or "record"))
             || floorTime < TimeSpan.Zero || floorTime > TimeSpan.FromHours(1) || floorDuring is not ("yes" or "no") || cpuLatency is not ("hold" or "free"))
         {
-            Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy, --floor-seconds 0..3600, --floor-during yes|no, --cpu-latency hold|free");
+            Console.Error.WriteLine("realtime: --seconds 1..86400, --scenarios from idle, idle-sll, busy, record, --floor-seconds 0..3600, --floor-during yes|no, --cpu-latency hold|free");
             return 2;
         }
 
@@ -147,8 +148,10 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
             double lagP50 = 0, lagP99 = 0, lagP999 = 0, lagMax = 0;
             var tickTime = new Quantiles(0, 0, 0, 0);
             var pauseStart = GC.GetTotalPauseDuration();
+            var recordDir = name == "record" ? Directory.CreateTempSubdirectory("rc-bench-rt-rec-") : null;
+            var record = recordDir is null ? null : new Host.Recording.RecordingOptions { Path = Path.Combine(recordDir.FullName, "session.mcap") };
             var report = HeadlessRun.RunRealTime(
-                new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads, RealtimeGcLatency = gc, Stop = interrupt },
+                new RunOptions { GraphPath = graph, Virtual = false, Transport = transport, Duration = duration, ContinueOnFault = true, Threads = threads, RealtimeGcLatency = gc, Stop = interrupt, Record = record },
                 ShippedPlugins.Catalog(),
                 new VirtualRunHooks
                 {
@@ -162,6 +165,12 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
                     },
                 });
             var stealMs = (PlatformFloor.StealTicks() - stealStart) * CpuTimes.MillisecondsPerTick;
+            if (report.Recording is { } recording)
+            {
+                Console.WriteLine($"scenario {name}: {recording}");
+            }
+
+            recordDir?.Delete(recursive: true);
             var simEnd = sim.Stop(TimeSpan.FromSeconds(10)) ?? "the simulator did not stop on SIGTERM: killed";
             var periods = Periods(cycles!.Starts);
             var allocSeconds = (allocEndAt - allocStartAt) / (double)Stopwatch.Frequency;
@@ -248,11 +257,6 @@ internal sealed class RealtimeBenchCommand : IBenchCommand
         }
     }
 
-    internal static string? Arg(string[] args, string name)
-    {
-        var i = Array.IndexOf(args, name);
-        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
-    }
 
     /// <summary>How the simulator process runs: its SCHED_FIFO priority (0: none) and the baud its modules are commissioned at (null: the robot file's).</summary>
     private sealed record SimSettings(int FifoPriority, int? Baud);

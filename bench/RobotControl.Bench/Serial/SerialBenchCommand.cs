@@ -26,8 +26,8 @@ internal sealed class SerialBenchCommand : IBenchCommand
 
     public int Run(string[] args)
     {
-        var transactions = int.Parse(Arg(args, "--transactions") ?? "2000", CultureInfo.InvariantCulture);
-        var outFile = Arg(args, "--out");
+        var transactions = int.Parse(BenchArgs.Value(args, "--transactions") ?? "2000", CultureInfo.InvariantCulture);
+        var outFile = BenchArgs.Value(args, "--out");
         var rx = new byte[64];
         var results = new List<Result>();
 
@@ -147,11 +147,6 @@ internal sealed class SerialBenchCommand : IBenchCommand
         return new Result(what, count, failures, latencies[count / 2], latencies[Math.Min(count - 1, count * 99 / 100)], (double)thread / count, (double)all / count, cpu / wallUs);
     }
 
-    private static string? Arg(string[] args, string name)
-    {
-        var i = Array.IndexOf(args, name);
-        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
-    }
 
     private sealed record Result(string What, int Count, int Failures, double MedianUs, double P99Us, double BytesPerOpThread, double BytesPerOpAll, double ThreadCpuShare);
 

@@ -40,11 +40,11 @@ internal sealed class StallBenchCommand : IBenchCommand
             return 2;
         }
 
-        var graph = RealtimeBenchCommand.Arg(args, "--graph") ?? "graphs/teleop-lb.json";
+        var graph = BenchArgs.Value(args, "--graph") ?? "graphs/teleop-lb.json";
         var robotFile = "hardware/robots/lb-1.0.json";
-        var stalls = (RealtimeBenchCommand.Arg(args, "--stalls-ms") ?? "20,50,100,200,400,1000").Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
+        var stalls = (BenchArgs.Value(args, "--stalls-ms") ?? "20,50,100,200,400,1000").Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
         var lengths = stalls.Select(s => int.TryParse(s, NumberStyles.None, CultureInfo.InvariantCulture, out var ms) && ms is > 0 and <= 60_000 ? ms : -1).ToArray();
-        var repeat = int.TryParse(RealtimeBenchCommand.Arg(args, "--repeat") ?? "3", NumberStyles.None, CultureInfo.InvariantCulture, out var r) ? r : -1;
+        var repeat = int.TryParse(BenchArgs.Value(args, "--repeat") ?? "3", NumberStyles.None, CultureInfo.InvariantCulture, out var r) ? r : -1;
         var problem = lengths.Length == 0 || lengths.Any(l => l < 0) ? "--stalls-ms: give lengths from 1 to 60000 ms, comma-separated"
             : repeat is < 1 or > 100 ? "--repeat: give 1 to 100"
             : !File.Exists(graph) ? $"--graph: no file {graph}" : null;
@@ -79,7 +79,7 @@ internal sealed class StallBenchCommand : IBenchCommand
 
         var passed = cases.Count(c => c.Pass);
         Console.WriteLine($"stall: {passed} of {cases.Count} cases ended as graded: {(passed == cases.Count ? "PASS" : "FAIL")}");
-        if (RealtimeBenchCommand.Arg(args, "--out") is { } outFile)
+        if (BenchArgs.Value(args, "--out") is { } outFile)
         {
             File.WriteAllText(outFile, JsonSerializer.Serialize(new { graph, limit_ms = limitMs, torque_off_stage_ms = stageMs, cases }, JsonOptions));
         }

@@ -27,12 +27,12 @@ internal sealed class ConsoleBench : IBenchCommand
     public int Run(string[] args)
     {
         var c = CultureInfo.InvariantCulture;
-        var graph = Arg(args, "--graph") ?? "graphs/teleop-lb.json";
-        var seconds = double.Parse(Arg(args, "--seconds") ?? "10", c);
-        var clients = int.Parse(Arg(args, "--clients") ?? "3", c);
-        var repeats = int.Parse(Arg(args, "--repeats") ?? "3", c);
-        var chromium = Arg(args, "--chromium") ?? "/usr/bin/chromium";
-        var outPath = Arg(args, "--out") ?? "docs/perf/console.json";
+        var graph = BenchArgs.Value(args, "--graph") ?? "graphs/teleop-lb.json";
+        var seconds = double.Parse(BenchArgs.Value(args, "--seconds") ?? "10", c);
+        var clients = int.Parse(BenchArgs.Value(args, "--clients") ?? "3", c);
+        var repeats = int.Parse(BenchArgs.Value(args, "--repeats") ?? "3", c);
+        var chromium = BenchArgs.Value(args, "--chromium") ?? "/usr/bin/chromium";
+        var outPath = BenchArgs.Value(args, "--out") ?? "docs/perf/console.json";
         var catalog = PluginCatalog.FromAssemblies(typeof(ClutchPlugin).Assembly, typeof(TouchPlugin).Assembly);
 
         var runs = new List<StreamRun>();
@@ -44,7 +44,7 @@ internal sealed class ConsoleBench : IBenchCommand
         }
 
         var browser = BrowserMeasures.Measure(Open(graph, catalog), chromium).GetAwaiter().GetResult();
-        var chunks = BrowserMeasures.AllChunks(Arg(args, "--dist") ?? "src/RobotControl.Console/web/dist/assets");
+        var chunks = BrowserMeasures.AllChunks(BenchArgs.Value(args, "--dist") ?? "src/RobotControl.Console/web/dist/assets");
         var idle = runs.Where(x => x.Clients == 0).ToList();
         var busy = runs.Where(x => x.Clients > 0).ToList();
         var summary = new
@@ -81,11 +81,6 @@ internal sealed class ConsoleBench : IBenchCommand
     private static LiveSession Open(string graph, PluginCatalog catalog) =>
         new(new LiveSessionOptions { GraphPath = graph, Catalog = catalog, Virtual = true });
 
-    private static string? Arg(string[] args, string name)
-    {
-        var i = Array.IndexOf(args, name);
-        return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
-    }
 }
 
 /// <summary>One session's loop figures over the measured window.</summary>

@@ -49,6 +49,12 @@ internal sealed class ReplayData : IDisposable
     /// <summary>The ring's signal names.</summary>
     public List<string> Names { get; } = [];
 
+    /// <summary>Time between two recorded rows of the graph's signals (decimation over loop rate), seconds; 1 when the metadata does not say.</summary>
+    public double RowSpacingSeconds =>
+        double.TryParse(Meta.GetValueOrDefault("loop_rate_hz"), NumberStyles.Float, CultureInfo.InvariantCulture, out var hz) && hz > 0
+            ? (int.TryParse(Meta.GetValueOrDefault("decimate"), NumberStyles.Integer, CultureInfo.InvariantCulture, out var n) && n > 0 ? n : 1) / hz
+            : 1;
+
     /// <summary>Length of the recording, seconds.</summary>
     public double DurationSeconds => File.EndNs <= StartNs ? 0 : Seconds(File.EndNs);
 

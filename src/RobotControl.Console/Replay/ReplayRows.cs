@@ -6,14 +6,12 @@ namespace RobotControl.WebConsole.Replay;
 /// <summary>
 /// The replay's read position in a recording: the rows of the plots' ring (the graph's signals at each recorded row,
 /// then each arm's commanded joints as last recorded at or before it), read from the file in time order, a chunk at a
-/// time, as the playback reaches them. A seek starts a new read just before the new position (<see cref="Lookback"/>),
-/// so the row shown there comes first with its commanded joints. Used under the replay's lock.
+/// time, as the playback reaches them. A seek starts a new read just before the new position (two rows' spacing, wider
+/// where the recording has a gap), so the row shown there comes first with its commanded joints, and reads only the
+/// chunk or two there. Used under the replay's lock.
 /// </summary>
 internal sealed class ReplayRows(ReplayData data) : IDisposable
 {
-    /// <summary>How far before a seek's position the read starts, to find the row shown there and the joints commanded then.</summary>
-    public static readonly TimeSpan Lookback = TimeSpan.FromSeconds(1);
-
     private readonly double[] _row = new double[data.Names.Count];
     private readonly double[] _carried = new double[data.Names.Count];
     private IEnumerator<McapMessage>? _messages = data.File.Messages([data.Signals, .. data.Joints]).GetEnumerator();
@@ -26,17 +24,24 @@ internal sealed class ReplayRows(ReplayData data) : IDisposable
     /// <summary>Moves the read to <paramref name="seconds"/>: the next row is the last one recorded at or before it.</summary>
     public void Seek(double seconds)
     {
-        _messages?.Dispose();
         var position = data.Ns(seconds);
-        _messages = data.File.Messages([data.Signals, .. data.Joints], data.Ns(Math.Max(0, seconds - Lookback.TotalSeconds))).GetEnumerator();
-        _pending = null;
-        _carriedTime = double.NaN;
-        Array.Fill(_row, double.NaN);
-        while (Next(position, out var time))
+        var lookback = (2 * data.RowSpacingSeconds) + 0.01;
+        do
         {
-            _row.CopyTo(_carried, 0);
-            _carriedTime = time;
+            _messages?.Dispose();
+            _messages = data.File.Messages([data.Signals, .. data.Joints], data.Ns(Math.Max(0, seconds - lookback))).GetEnumerator();
+            _pending = null;
+            _carriedTime = double.NaN;
+            Array.Fill(_row, double.NaN);
+            while (Next(position, out var time))
+            {
+                _row.CopyTo(_carried, 0);
+                _carriedTime = time;
+            }
+
+            lookback *= 10; // no row in the window: a gap in the recording
         }
+        while (double.IsNaN(_carriedTime) && seconds - (lookback / 10) > 0);
 
         Count = 0;
     }

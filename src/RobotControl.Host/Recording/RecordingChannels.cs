@@ -11,8 +11,9 @@ namespace RobotControl.Host.Recording;
 /// <summary>
 /// The recording's channels on an <see cref="McapWriter"/> (JSON messages, each with its JSON Schema) and the
 /// encoding of a loop row into their messages: per arm its joints at every recorded tick; the graph's signals, the
-/// input devices and the tool poses (<c>foxglove.FrameTransforms</c> on <c>/tf</c>) at the decimated ticks. Used by
-/// the writer thread only.
+/// input devices and the tool poses (<c>foxglove.FrameTransforms</c> on <c>/tf</c>) at the decimated ticks, with the
+/// URDF's link frames (<see cref="UrdfLinkFrames"/>, at the measured joints) in the <c>/tf</c> message of the rows
+/// asked for, so the file opens in a 3D tool with the recording's URDF. Used by the writer thread only.
 /// </summary>
 internal sealed class RecordingChannels : IDisposable
 {
@@ -26,6 +27,7 @@ internal sealed class RecordingChannels : IDisposable
     private readonly ushort[] _joints;
     private readonly ChainState _measured;
     private readonly ChainState _commanded;
+    private readonly UrdfLinkFrames _links;
     private readonly string[] _jointNames;
     private readonly string[] _actuatorNames;
     private readonly (string Instance, string Port)[] _signalNames;
@@ -52,6 +54,7 @@ internal sealed class RecordingChannels : IDisposable
         var chain = new KinematicChain(robot);
         _measured = chain.CreateState();
         _commanded = chain.CreateState();
+        _links = new UrdfLinkFrames(robot);
     }
 
     public ushort RunLevel { get; }
@@ -79,8 +82,11 @@ internal sealed class RecordingChannels : IDisposable
         _writer.WriteMessage(channel, logTimeNs, _buffer.WrittenSpan);
     }
 
-    /// <summary>Writes the messages of one loop row at <paramref name="logTimeNs"/>; the graph, devices and poses only when <paramref name="full"/>.</summary>
-    public void WriteRow(ReadOnlySpan<double> row, ulong logTimeNs, bool full)
+    /// <summary>
+    /// Writes the messages of one loop row at <paramref name="logTimeNs"/>; the graph, devices and poses only when
+    /// <paramref name="full"/>, and with the poses the URDF's link frames when <paramref name="links"/>.
+    /// </summary>
+    public void WriteRow(ReadOnlySpan<double> row, ulong logTimeNs, bool full, bool links)
     {
         for (var arm = 0; arm < _layout.Arms.Count; arm++)
         {
@@ -112,7 +118,7 @@ internal sealed class RecordingChannels : IDisposable
             Write(_devices[d], logTimeNs);
         }
 
-        WriteTransforms(row, logTimeNs);
+        WriteTransforms(row, logTimeNs, links);
     }
 
     private void WriteSignals(ReadOnlySpan<double> row, ulong logTimeNs)
@@ -146,8 +152,11 @@ internal sealed class RecordingChannels : IDisposable
         Write(_signals, logTimeNs);
     }
 
-    /// <summary>Each arm's tool, measured and commanded, in the arm's own model frame (<c>{arm}_model</c>), metres.</summary>
-    private void WriteTransforms(ReadOnlySpan<double> row, ulong logTimeNs)
+    /// <summary>
+    /// Each arm's tool, measured and commanded, in the arm's own model frame (<c>{arm}_model</c>), metres; with
+    /// <paramref name="links"/>, every URDF link in its parent (from <c>body</c>), at the measured joints.
+    /// </summary>
+    private void WriteTransforms(ReadOnlySpan<double> row, ulong logTimeNs, bool links)
     {
         var json = Begin();
         json.WriteStartObject();
@@ -156,8 +165,14 @@ internal sealed class RecordingChannels : IDisposable
         {
             _measured.Update(row.Slice(slot.Positions, _jointNames.Length));
             _commanded.Update(row.Slice(slot.Setpoints, _jointNames.Length));
-            Transform(json, logTimeNs, slot.Name, UrdfExport.ToolLinkName(slot.Name) + "_measured", _measured.ToolPose);
-            Transform(json, logTimeNs, slot.Name, UrdfExport.ToolLinkName(slot.Name) + "_setpoint", _commanded.ToolPose);
+            Transform(json, logTimeNs, slot.Name + "_model", UrdfExport.ToolLinkName(slot.Name) + "_measured", _measured.ToolPose);
+            Transform(json, logTimeNs, slot.Name + "_model", UrdfExport.ToolLinkName(slot.Name) + "_setpoint", _commanded.ToolPose);
+        }
+
+        for (var i = 0; links && i < _links.Count; i++)
+        {
+            var (position, rotation) = _links.Transform(i, row.Slice(_layout.Arms[_links.Arm(i)].Positions, _jointNames.Length));
+            Transform(json, logTimeNs, _links.Parent(i), _links.Child(i), new Pose(position, rotation));
         }
 
         json.WriteEndArray();
@@ -165,14 +180,14 @@ internal sealed class RecordingChannels : IDisposable
         Write(_transforms, logTimeNs);
     }
 
-    private static void Transform(Utf8JsonWriter json, ulong logTimeNs, string arm, string child, Pose pose)
+    private static void Transform(Utf8JsonWriter json, ulong logTimeNs, string parent, string child, Pose pose)
     {
         json.WriteStartObject();
         json.WriteStartObject("timestamp");
         json.WriteNumber("sec", logTimeNs / 1_000_000_000UL);
         json.WriteNumber("nsec", logTimeNs % 1_000_000_000UL);
         json.WriteEndObject();
-        json.WriteString("parent_frame_id", arm + "_model");
+        json.WriteString("parent_frame_id", parent);
         json.WriteString("child_frame_id", child);
         json.WriteStartObject("translation");
         Number(json, "x", pose.Position.X * UrdfExport.MetresPerMm);

@@ -1,3 +1,5 @@
+using RobotControl.Host.Recording.Mcap;
+
 namespace RobotControl.Host.Recording;
 
 /// <summary>What a session recording does (<c>--record</c>).</summary>
@@ -12,6 +14,9 @@ public sealed record RecordingOptions
     /// modules every <see cref="SlowEvery"/>.
     /// </summary>
     public int Decimate { get; init; } = 1;
+
+    /// <summary>The chunks' compression: <see cref="McapCompression.Zstd"/> (a file about a tenth of the size) or <see cref="McapCompression.None"/>.</summary>
+    public string Compression { get; init; } = McapCompression.Zstd;
 
     /// <summary>How often (loop time) the bus statistics and module status are recorded.</summary>
     public TimeSpan SlowEvery { get; init; } = TimeSpan.FromMilliseconds(100);

@@ -20,6 +20,9 @@ public sealed class SessionRecorder : IDisposable
     /// <summary>The library name written into the file's header.</summary>
     public const string Library = "robotcontrol-mcap";
 
+    /// <summary>The URDF's link frames go on <c>/tf</c> at most this often (loop time): enough for a 3D view, a fraction of the file.</summary>
+    private static readonly TimeSpan LinkFramesEvery = TimeSpan.FromMilliseconds(10);
+
     private readonly RecordingOptions _options;
     private readonly RobotSession _session;
     private readonly RecordingTap _tap;
@@ -29,6 +32,7 @@ public sealed class SessionRecorder : IDisposable
     private readonly Thread _thread;
     private readonly ulong _startNs;
     private readonly ulong _periodNs;
+    private readonly ulong _linksEvery;
     private readonly ConcurrentQueue<(string Who, string What)> _commands = new();
     private volatile bool _stopping;
     private McapWriter? _writer;
@@ -44,6 +48,7 @@ public sealed class SessionRecorder : IDisposable
         _ring = new SampleRing(_layout.Width, options.RingRows);
         _startNs = (ulong)(TimeProvider.System.GetUtcNow() - DateTimeOffset.UnixEpoch).Ticks * 100;
         _periodNs = (ulong)session.Loop.Period.Ticks * 100;
+        _linksEvery = (ulong)Math.Max(1, Math.Ceiling(LinkFramesEvery.TotalSeconds / session.Loop.Period.TotalSeconds)) is var every && every % (ulong)options.Decimate == 0 ? every : every * (ulong)options.Decimate;
         _thread = new Thread(WriteUntilStopped) { Name = "recorder (mcap)", IsBackground = true };
     }
 
@@ -64,6 +69,10 @@ public sealed class SessionRecorder : IDisposable
         ArgumentNullException.ThrowIfNull(tap);
         ArgumentNullException.ThrowIfNull(options);
         ArgumentOutOfRangeException.ThrowIfLessThan(options.Decimate, 1);
+        if (options.Compression is not (McapCompression.None or McapCompression.Zstd))
+        {
+            throw new ArgumentException($"recording compression '{options.Compression}': give '' or 'zstd'", nameof(options));
+        }
         Stream stream;
         try
         {
@@ -123,7 +132,7 @@ public sealed class SessionRecorder : IDisposable
         var now = _startNs;
         try
         {
-            _writer = new McapWriter(_stream, string.Empty, Library);
+            _writer = new McapWriter(_stream, string.Empty, Library, compression: _options.Compression);
             WriteHeaderRecords();
             using var channels = new RecordingChannels(_writer, _layout, _session.Robot.Controllers.Select(c => c.Id));
             var sources = new SessionSources(_session.Supervisor, _session.Robot, channels, _startNs, _commands);
@@ -140,7 +149,7 @@ public sealed class SessionRecorder : IDisposable
                     var loopNs = (ulong)row[0];
                     now = _startNs + loopNs;
                     var tick = (loopNs + (_periodNs / 2)) / _periodNs;
-                    channels.WriteRow(row, now, tick % (ulong)_options.Decimate == 0);
+                    channels.WriteRow(row, now, tick % (ulong)_options.Decimate == 0, tick % _linksEvery == 0);
                     if (first || loopNs - lastSlow >= slowNs)
                     {
                         sources.Status(now);

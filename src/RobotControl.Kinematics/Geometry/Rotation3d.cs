@@ -58,6 +58,14 @@ public readonly record struct Rotation3d(Vector3d X, Vector3d Y, Vector3d Z)
         return new(new Vector3d(c, s, 0), new Vector3d(-s, c, 0), Vector3d.UnitZ);
     }
 
+    /// <summary>Rotation about the unit axis <paramref name="axis"/> by <paramref name="angle"/> radians (Rodrigues).</summary>
+    public static Rotation3d AboutAxis(Vector3d axis, double angle)
+    {
+        var (s, c) = Math.SinCos(angle);
+        Vector3d Turn(Vector3d v) => (v * c) + (Vector3d.Cross(axis, v) * s) + (axis * (Vector3d.Dot(axis, v) * (1 - c)));
+        return new(Turn(Vector3d.UnitX), Turn(Vector3d.UnitY), Turn(Vector3d.UnitZ));
+    }
+
     /// <summary>Rotation from roll (about X), pitch (about Y), yaw (about Z), applied as Rz(yaw) Ry(pitch) Rx(roll).</summary>
     public static Rotation3d FromRollPitchYaw(double roll, double pitch, double yaw) => AboutZ(yaw) * AboutY(pitch) * AboutX(roll);
 

@@ -9,7 +9,9 @@ namespace RobotControl.Kinematics.Urdf;
 /// <param name="Origin">Parent -> joint frame transform.</param>
 /// <param name="Axis">Rotation axis in the joint frame (unit), for a revolute joint.</param>
 /// <param name="Limits">Limits of a revolute joint; null for a fixed joint.</param>
-internal sealed record UrdfJoint(string Name, string Parent, string Child, UrdfFrame Origin, Vector3d Axis, UrdfLimits? Limits)
+/// <param name="Arm">Index of the arm the joint belongs to (the robot file's order).</param>
+/// <param name="JointIndex">Index of the robot file's joint that turns it, or -1 for a fixed joint.</param>
+internal sealed record UrdfJoint(string Name, string Parent, string Child, UrdfFrame Origin, Vector3d Axis, UrdfLimits? Limits, int Arm, int JointIndex)
 {
     /// <summary>True for a revolute joint.</summary>
     public bool IsRevolute => Limits is not null;

@@ -49,7 +49,7 @@ internal static class UrdfRobotBuilder
         var baseLink = $"{arm.Name}_base";
         links.Add(new UrdfLink(baseLink, null, 0, 0));
         var offset = new Vector3d(arm.BaseOffsetMm.X, arm.BaseOffsetMm.Y, arm.BaseOffsetMm.Z);
-        joints.Add(new UrdfJoint($"{arm.Name}_mount", RootLink, baseLink, new UrdfFrame(offset, Rotation3d.Identity), Vector3d.UnitZ, null));
+        joints.Add(new UrdfJoint($"{arm.Name}_mount", RootLink, baseLink, new UrdfFrame(offset, Rotation3d.Identity), Vector3d.UnitZ, null, armIndex, -1));
 
         var parent = baseLink;
         var entry = UrdfFrame.Identity;
@@ -61,14 +61,14 @@ internal static class UrdfRobotBuilder
             links.Add(Visual(link, fixedPart.Position, radius));
             var limits = row.IsFixed ? null : Limits(robot, armIndex, row.JointIndex);
             var name = row.IsFixed ? $"{arm.Name}_fixed{k}" : $"{arm.Name}_{robot.Joints[row.JointIndex].Name}";
-            joints.Add(new UrdfJoint(name, parent, link, entry, axis, limits));
+            joints.Add(new UrdfJoint(name, parent, link, entry, axis, limits, armIndex, row.IsFixed ? -1 : row.JointIndex));
             parent = link;
             entry = fixedPart;
         }
 
         var tool = UrdfExport.ToolLinkName(arm.Name);
         links.Add(new UrdfLink(tool, null, 0, 0));
-        joints.Add(new UrdfJoint($"{arm.Name}_tool_mount", parent, tool, entry, Vector3d.UnitZ, null));
+        joints.Add(new UrdfJoint($"{arm.Name}_tool_mount", parent, tool, entry, Vector3d.UnitZ, null, armIndex, -1));
     }
 
     /// <summary>Rz(theta_offset) Tz(d) Tx(a) Rx(alpha): the part of a DH row that does not move.</summary>

@@ -1,8 +1,12 @@
 using System.Globalization;
+using System.Text.Json;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Recording;
 using RobotControl.Host.Recording.Mcap;
 using RobotControl.Kinematics.Forward;
+using RobotControl.Kinematics.Geometry;
+using RobotControl.Kinematics.Mirroring;
+using RobotControl.Kinematics.Urdf;
 using RobotControl.TestSupport;
 using RobotControl.TestSupport.Mcap;
 
@@ -33,6 +37,7 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
         Assert.Equal(job.Report.Safety!.RunLevels.Count, written["/safety/run_level"]);
         Assert.Equal(1, written["/operator/commands"]); // the harness pressed the pedal
         Assert.Equal(["teleop-lb.json", "lb-1.0.json", "LB-1.0.urdf"], check.Attachments);
+        Assert.Equal([McapCompression.Zstd], check.Compressions); // the default
         Assert.True(check.Schemas >= 10, $"{check.Schemas} schemas");
     }
 
@@ -84,7 +89,7 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
             {
                 GraphPath = Graphs.Path("teleop-lb.json"),
                 Duration = TimeSpan.FromSeconds(2),
-                Record = new RecordingOptions { Path = path, OpenStream = p => new FullDisk(File.Create(p), 3 << 20), Stopped = told.Add },
+                Record = new RecordingOptions { Path = path, OpenStream = p => new FullDisk(File.Create(p), 256 << 10), Stopped = told.Add },
             },
             TestPlugins.Catalog());
 
@@ -96,6 +101,53 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
         using var cut = McapFile.Open(path);
         Assert.NotNull(cut.Truncated);
         Assert.NotEmpty(cut.Messages()); // what reached the disk, up to the last complete chunk
+    }
+
+    [Fact]
+    public void The_link_frames_on_tf_put_each_tool_where_the_recorded_joints_put_it()
+    {
+        using var file = McapFile.Open(job.Path);
+        var robot = ShippedRobots.Lb;
+        var chain = new KinematicChain(robot);
+        var state = chain.CreateState();
+        var children = Enumerable.Range(0, new UrdfLinkFrames(robot).Count).Select(new UrdfLinkFrames(robot).Child).Order().ToList();
+        var joints = file.Channel("/arms/left/joints")!.Id;
+        var tf = file.Channel(RecordingTopics.Transforms)!.Id;
+        var measured = new Dictionary<ulong, double[]>();
+        var withLinks = 0;
+        foreach (var message in file.Messages([joints, tf]))
+        {
+            using var doc = JsonDocument.Parse(message.Data);
+            if (message.ChannelId == joints)
+            {
+                measured[message.LogTimeNs] = [.. doc.RootElement.GetProperty("position_rad").EnumerateObject().Select(p => p.Value.GetDouble())];
+                continue;
+            }
+
+            var frames = doc.RootElement.GetProperty("transforms").EnumerateArray().ToDictionary(t => t.GetProperty("child_frame_id").GetString()!);
+            if (!frames.ContainsKey("left_tool"))
+            {
+                continue;
+            }
+
+            withLinks++;
+            Assert.Equal(children, frames.Keys.Where(k => !k.EndsWith("_measured", StringComparison.Ordinal) && !k.EndsWith("_setpoint", StringComparison.Ordinal)).Order().ToList());
+            state.Update(measured[message.LogTimeNs]);
+            var expected = new ArmMirror(robot, "left").ModelToBody(state.ToolPose).Position * UrdfExport.MetresPerMm;
+            var position = Vector3d.Zero;
+            var rotation = Rotation3d.Identity;
+            foreach (var frame in RootTo(frames, "left_tool"))
+            {
+                var t = frame.GetProperty("translation");
+                var r = frame.GetProperty("rotation");
+                position += rotation.Apply(new Vector3d(t.GetProperty("x").GetDouble(), t.GetProperty("y").GetDouble(), t.GetProperty("z").GetDouble()));
+                rotation *= FromQuaternion(r.GetProperty("x").GetDouble(), r.GetProperty("y").GetDouble(), r.GetProperty("z").GetDouble(), r.GetProperty("w").GetDouble());
+            }
+
+            Assert.True((position - expected).Length < 1e-9, $"at {message.LogTimeNs}: {position} against {expected}");
+        }
+
+        Assert.Equal(job.Report.Ticks / 10, withLinks); // 100 Hz at a 1 kHz loop
     }
 
     [Fact]
@@ -126,6 +178,25 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
         var joints = recorded.Channels.Values.Single(c => c.Topic == "/arms/right/joints").Id;
         Assert.Equal(2000, recorded.Messages([joints]).Count()); // the tap was on every tick measured
     }
+
+    /// <summary>The transforms from the root down to <paramref name="link"/>, root first.</summary>
+    private static List<JsonElement> RootTo(Dictionary<string, JsonElement> frames, string link)
+    {
+        var path = new List<JsonElement>();
+        for (var current = link; frames.TryGetValue(current, out var frame); current = frame.GetProperty("parent_frame_id").GetString()!)
+        {
+            path.Insert(0, frame);
+        }
+
+        Assert.Equal("body", path[0].GetProperty("parent_frame_id").GetString());
+        return path;
+    }
+
+    /// <summary>The rotation of unit quaternion (x, y, z, w), written out here: nothing of the recorder's conversion.</summary>
+    private static Rotation3d FromQuaternion(double x, double y, double z, double w) => new(
+        new Vector3d(1 - (2 * ((y * y) + (z * z))), 2 * ((x * y) + (z * w)), 2 * ((x * z) - (y * w))),
+        new Vector3d(2 * ((x * y) - (z * w)), 1 - (2 * ((x * x) + (z * z))), 2 * ((y * z) + (x * w))),
+        new Vector3d(2 * ((x * z) + (y * w)), 2 * ((y * z) - (x * w)), 1 - (2 * ((x * x) + (y * y)))));
 
     private static int Column(CsvExport.Table table, string name)
     {

@@ -70,6 +70,9 @@ public sealed record McapCheckResult(JsonObject Raw)
     /// <summary>Chunk indexes in the summary.</summary>
     public int Chunks => (int?)Raw["indexed"]?["chunks"] ?? 0;
 
+    /// <summary>The compressions the chunk indexes name ("" for uncompressed), each once.</summary>
+    public IReadOnlyList<string> Compressions => Raw["indexed"]?["compressions"]?.AsArray().Select(a => (string)a!).ToList() ?? [];
+
     /// <summary>Attachment names.</summary>
     public IReadOnlyList<string> Attachments => Raw["indexed"]?["attachments"]?.AsArray().Select(a => (string)a!).ToList() ?? [];
 

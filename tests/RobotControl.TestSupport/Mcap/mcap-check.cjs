@@ -1,4 +1,5 @@
-// Reads MCAP files with the official TypeScript reader (@mcap/core, installed by the console's front-end `npm ci`)
+// Reads MCAP files with the official TypeScript reader (@mcap/core, installed by the console's front-end `npm ci`,
+// with fzstd to decompress zstd chunks)
 // and prints one JSON object per file: whether the file is complete, the message count per topic, the schemas and
 // messages that parse as JSON, and the CRCs checked (chunk CRCs by the streaming reader, the data section CRC here, the
 // summary CRC by the indexed reader). A file cut short is read by the streaming reader up to its last complete chunk.
@@ -11,9 +12,11 @@ const { createRequire } = require("module");
 const web = process.argv[2];
 const mcap = createRequire(path.join(path.resolve(web), "package.json"))("@mcap/core");
 const { crc32 } = createRequire(require.resolve("@mcap/core", { paths: [path.resolve(web)] }))("@foxglove/crc");
+const fzstd = createRequire(path.join(path.resolve(web), "package.json"))("fzstd");
+const decompressHandlers = { zstd: (data, size) => fzstd.decompress(data, new Uint8Array(Number(size))) };
 
 function stream(bytes) {
-  const reader = new mcap.McapStreamReader({ validateCrcs: true });
+  const reader = new mcap.McapStreamReader({ validateCrcs: true, decompressHandlers });
   reader.append(bytes);
   const channels = new Map();
   const schemas = new Map();
@@ -63,7 +66,7 @@ async function indexed(bytes) {
     size: async () => BigInt(bytes.length),
     read: async (offset, length) => bytes.subarray(Number(offset), Number(offset + length)),
   };
-  const reader = await mcap.McapIndexedReader.Initialize({ readable });
+  const reader = await mcap.McapIndexedReader.Initialize({ readable, decompressHandlers });
   const counts = {};
   for (const [, channel] of reader.channelsById) counts[channel.topic] = 0;
   for await (const message of reader.readMessages({ validateCrcs: true })) {
@@ -73,7 +76,7 @@ async function indexed(bytes) {
   for (const [id, count] of reader.statistics.channelMessageCounts) statistics[reader.channelsById.get(id).topic] = Number(count);
   const attachments = [];
   for await (const a of reader.readAttachments()) attachments.push(a.name);
-  return { counts, statistics, chunks: reader.chunkIndexes.length, attachments, metadata: reader.metadataIndexes.map((m) => m.name) };
+  return { counts, statistics, chunks: reader.chunkIndexes.length, compressions: [...new Set(reader.chunkIndexes.map((c) => c.compression))], attachments, metadata: reader.metadataIndexes.map((m) => m.name) };
 }
 
 (async () => {

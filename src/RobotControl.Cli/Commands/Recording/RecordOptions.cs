@@ -1,19 +1,22 @@
 using System.CommandLine;
 using RobotControl.Cli.Options;
 using RobotControl.Host.Recording;
+using RobotControl.Host.Recording.Mcap;
 
 namespace RobotControl.Cli.Commands.Recording;
 
 /// <summary>
 /// The recording options <c>run</c> and <c>console</c> share: <c>--record &lt;file.mcap&gt;</c> (checked while parsing:
-/// the directory exists and takes a file), <c>--record-decimate N</c> and <c>--force</c> (replace a file that exists).
+/// the directory exists and takes a file), <c>--record-decimate N</c>, <c>--record-compression zstd|none</c> and
+/// <c>--force</c> (replace a file that exists).
 /// </summary>
 internal sealed class RecordOptions
 {
-    private RecordOptions(Option<FileInfo?> path, Option<int> decimate, Option<bool> force)
+    private RecordOptions(Option<FileInfo?> path, Option<int> decimate, Option<string> compression, Option<bool> force)
     {
         Path = path;
         Decimate = decimate;
+        Compression = compression;
         Force = force;
     }
 
@@ -21,12 +24,15 @@ internal sealed class RecordOptions
 
     public Option<int> Decimate { get; }
 
+    public Option<string> Compression { get; }
+
     public Option<bool> Force { get; }
 
-    /// <summary>Makes the three options.</summary>
+    /// <summary>Makes the options.</summary>
     public static RecordOptions Create() => new(
         CliOption.OutputFile("--record", "Record the session to this MCAP file (every signal, joints, bus, run levels, trips; docs/recording.md)"),
         CliOption.Number("--record-decimate", "With --record: record the graph's signals, input devices and tool poses every N ticks (joints every tick)", 1, 1000, 1),
+        Compressions(),
         new Option<bool>("--force") { Description = "With --record: replace the file if it exists" });
 
     /// <summary>Adds the options to <paramref name="command"/>.</summary>
@@ -34,19 +40,28 @@ internal sealed class RecordOptions
     {
         command.Options.Add(Path);
         command.Options.Add(Decimate);
+        command.Options.Add(Compression);
         command.Options.Add(Force);
     }
 
     /// <summary>What the user asked for; null without <c>--record</c>.</summary>
     public RecordRequest? Value(ParseResult parse) =>
-        parse.GetValue(Path) is { } file ? new RecordRequest(file.FullName, parse.GetValue(Decimate), parse.GetValue(Force)) : null;
+        parse.GetValue(Path) is { } file ? new RecordRequest(file.FullName, parse.GetValue(Decimate), parse.GetValue(Compression) == "none" ? McapCompression.None : McapCompression.Zstd, parse.GetValue(Force)) : null;
+
+    private static Option<string> Compressions()
+    {
+        var option = new Option<string>("--record-compression") { Description = "With --record: the chunks' compression, zstd (default) or none", DefaultValueFactory = _ => McapCompression.Zstd };
+        option.AcceptOnlyFromAmong(McapCompression.Zstd, "none");
+        return option;
+    }
 }
 
 /// <summary>A recording asked for on the command line.</summary>
 /// <param name="Path">The file (full path).</param>
 /// <param name="Decimate">The <c>--record-decimate</c> value.</param>
+/// <param name="Compression">The chunks' compression (<see cref="McapCompression"/>).</param>
 /// <param name="Force">The <c>--force</c> flag.</param>
-internal sealed record RecordRequest(string Path, int Decimate, bool Force)
+internal sealed record RecordRequest(string Path, int Decimate, string Compression, bool Force)
 {
     /// <summary>The session layer's options; a stop of the recording is told on <paramref name="error"/> as it happens.</summary>
     /// <exception cref="FormatException">The file exists and <c>--force</c> was not given (one line).</exception>
@@ -57,6 +72,6 @@ internal sealed record RecordRequest(string Path, int Decimate, bool Force)
             throw new FormatException($"--record {Path}: the file exists; add --force to replace it");
         }
 
-        return new RecordingOptions { Path = Path, Decimate = Decimate, Stopped = line => error.WriteLine(line) };
+        return new RecordingOptions { Path = Path, Decimate = Decimate, Compression = Compression, Stopped = line => error.WriteLine(line) };
     }
 }

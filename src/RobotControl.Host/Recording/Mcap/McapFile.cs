@@ -15,9 +15,9 @@ namespace RobotControl.Host.Recording.Mcap;
 /// </summary>
 public sealed class McapFile : IDisposable
 {
-    private const int RecordHeader = 1 + 8;
+    private const int RecordHeader = McapRecords.RecordHeader;
     private const int FooterRecord = RecordHeader + 8 + 8 + 4;
-    private readonly SafeFileHandle _handle;
+    private readonly McapRecords _records;
     private readonly string _name;
     private readonly long _length;
     private readonly Dictionary<ushort, McapSchema> _schemas = [];
@@ -31,8 +31,8 @@ public sealed class McapFile : IDisposable
     {
         Path = path;
         _name = System.IO.Path.GetFileName(path);
-        _handle = handle;
-        _length = RandomAccess.GetLength(handle);
+        _records = new McapRecords(path, handle);
+        _length = _records.Length;
     }
 
     /// <summary>The file.</summary>
@@ -130,7 +130,7 @@ public sealed class McapFile : IDisposable
         {
             while (next < wanted.Count && (!open.TryPeek(out _, out var head) || wanted[next].StartNs <= head.Time))
             {
-                var messages = ReadMessages(wanted[next], channels, fromNs, toNs);
+                var messages = _records.ReadMessages(wanted[next], channels, fromNs, toNs);
                 if (messages.Length > 0)
                 {
                     open.Enqueue(new ChunkCursor(messages, next), (messages[0].LogTimeNs, next));
@@ -153,12 +153,11 @@ public sealed class McapFile : IDisposable
     }
 
     /// <inheritdoc />
-    public void Dispose() => _handle.Dispose();
+    public void Dispose() => _records.Dispose();
 
     private void Load()
     {
-        Span<byte> magic = stackalloc byte[8];
-        if (_length < McapWriter.Magic.Length || RandomAccess.Read(_handle, magic, 0) < magic.Length || !magic.SequenceEqual(McapWriter.Magic))
+        if (_length < McapWriter.Magic.Length || !_records.ReadBytes(0, McapWriter.Magic.Length).AsSpan().SequenceEqual(McapWriter.Magic))
         {
             throw new InvalidDataException($"{Path}: not an MCAP file (it does not start with the MCAP magic)");
         }
@@ -180,7 +179,7 @@ public sealed class McapFile : IDisposable
             return false;
         }
 
-        var tail = ReadBytes(footerAt, FooterRecord + McapWriter.Magic.Length);
+        var tail = _records.ReadBytes(footerAt, FooterRecord + McapWriter.Magic.Length);
         if (!tail.AsSpan(FooterRecord).SequenceEqual(McapWriter.Magic) || tail[0] != (byte)McapOpcode.Footer)
         {
             return false;
@@ -195,20 +194,20 @@ public sealed class McapFile : IDisposable
 
         if (summaryStart < (ulong)McapWriter.Magic.Length || summaryStart > (ulong)footerAt)
         {
-            throw Damaged($"its footer points at a summary at byte {summaryStart}, outside the file");
+            throw _records.Damaged($"its footer points at a summary at byte {summaryStart}, outside the file");
         }
 
-        var summary = ReadBytes((long)summaryStart, (int)(footerAt - (long)summaryStart));
+        var summary = _records.ReadBytes((long)summaryStart, (int)(footerAt - (long)summaryStart));
         if (summaryCrc != 0 && Crc32.Final(Crc32.Update(Crc32.Update(Crc32.Initial, summary), tail.AsSpan(0, FooterRecord - 4))) != summaryCrc)
         {
-            throw Damaged("its summary section's CRC does not match (the file is damaged)");
+            throw _records.Damaged("its summary section's CRC does not match (the file is damaged)");
         }
 
         var attachments = new List<(long Offset, int Length)>();
         var metadata = new List<(long Offset, int Length)>();
         var statistics = false;
         var chunkCount = 0u;
-        EachRecord(summary, (long)summaryStart, (opcode, body, at) =>
+        _records.EachRecord(summary, (long)summaryStart, (opcode, body, at) =>
         {
             var r = new McapCursor(body);
             switch (opcode)
@@ -221,7 +220,7 @@ public sealed class McapFile : IDisposable
                     Statistics(ref r, out chunkCount);
                     break;
                 case McapOpcode.ChunkIndex:
-                    _chunks.Add(ChunkIndex(ref r, at));
+                    _chunks.Add(ChunkIndex(ref r));
                     break;
                 case McapOpcode.AttachmentIndex:
                     attachments.Add(((long)r.U64(), checked((int)r.U64())));
@@ -242,7 +241,7 @@ public sealed class McapFile : IDisposable
 
         foreach (var (offset, length) in attachments.Concat(metadata))
         {
-            EachRecord(ReadBytes(offset, length), offset, (opcode, body, _) => Outside(opcode, body));
+            _records.EachRecord(_records.ReadBytes(offset, length), offset, (opcode, body, _) => Outside(opcode, body));
         }
 
         ReadHeader();
@@ -263,7 +262,7 @@ public sealed class McapFile : IDisposable
                 break;
             }
 
-            var head = ReadBytes(at, RecordHeader);
+            var head = _records.ReadBytes(at, RecordHeader);
             var length = BinaryPrimitives.ReadUInt64LittleEndian(head.AsSpan(1));
             if (length > (ulong)(_length - at - RecordHeader))
             {
@@ -278,10 +277,10 @@ public sealed class McapFile : IDisposable
                     Complete = true;
                     return;
                 case McapOpcode.Chunk:
-                    var body = ReadBytes(at + RecordHeader, checked((int)length));
-                    var (start, end, records) = OpenChunk(body, at);
+                    var body = _records.ReadBytes(at + RecordHeader, checked((int)length));
+                    var (start, end, records) = _records.OpenChunk(body, at);
                     var inChunk = new HashSet<ushort>();
-                    EachRecord(records, at, (inner, record, _) =>
+                    _records.EachRecord(records, at, (inner, record, _) =>
                     {
                         var r = new McapCursor(record);
                         if (inner == McapOpcode.Message)
@@ -305,7 +304,7 @@ public sealed class McapFile : IDisposable
 
                     break;
                 case McapOpcode.Schema or McapOpcode.Channel or McapOpcode.Attachment or McapOpcode.Metadata:
-                    Outside(opcode, ReadBytes(at + RecordHeader, checked((int)length)));
+                    Outside(opcode, _records.ReadBytes(at + RecordHeader, checked((int)length)));
                     break;
             }
 
@@ -324,15 +323,15 @@ public sealed class McapFile : IDisposable
             return _length;
         }
 
-        var head = ReadBytes(at, RecordHeader);
+        var head = _records.ReadBytes(at, RecordHeader);
         var length = BinaryPrimitives.ReadUInt64LittleEndian(head.AsSpan(1));
         if (head[0] != (byte)McapOpcode.Header || length > (ulong)(_length - at - RecordHeader))
         {
             return head[0] == (byte)McapOpcode.Header ? _length : at;
         }
 
-        var r = new McapCursor(ReadBytes(at + RecordHeader, (int)length));
-        Parse(McapOpcode.Header, at, () =>
+        var r = new McapCursor(_records.ReadBytes(at + RecordHeader, (int)length));
+        _records.Parse(McapOpcode.Header, at, () =>
         {
             Profile = r.String();
             Library = r.String();
@@ -394,7 +393,7 @@ public sealed class McapFile : IDisposable
         }
     }
 
-    private static McapChunkInfo ChunkIndex(ref McapCursor r, long at)
+    private static McapChunkInfo ChunkIndex(ref McapCursor r)
     {
         var start = r.U64();
         var end = r.U64();
@@ -403,115 +402,6 @@ public sealed class McapFile : IDisposable
         var channels = r.ChannelMap().Keys.ToHashSet();
         return new McapChunkInfo(start, end, offset, length, channels);
     }
-
-    /// <summary>The messages of <paramref name="chunk"/> on <paramref name="channels"/> within the times, by log time.</summary>
-    private McapMessage[] ReadMessages(McapChunkInfo chunk, IReadOnlyCollection<ushort>? channels, ulong fromNs, ulong toNs)
-    {
-        var record = ReadBytes(chunk.Offset, chunk.Length);
-        if (record[0] != (byte)McapOpcode.Chunk)
-        {
-            throw Damaged($"no chunk at byte {chunk.Offset}, where its index puts one");
-        }
-
-        var (_, _, records) = OpenChunk(record.AsMemory(RecordHeader), chunk.Offset);
-        var messages = new List<McapMessage>();
-        EachRecord(records, chunk.Offset, (opcode, body, _) =>
-        {
-            if (opcode != McapOpcode.Message)
-            {
-                return;
-            }
-
-            var r = new McapCursor(body);
-            var channel = r.U16();
-            r.U32();
-            var logTime = r.U64();
-            r.U64();
-            if (logTime >= fromNs && logTime <= toNs && (channels is null || channels.Contains(channel)))
-            {
-                messages.Add(new McapMessage(channel, logTime, r.Rest()));
-            }
-        });
-        return [.. messages.OrderBy(m => m.LogTimeNs)]; // stable: equal times keep the file's order
-    }
-
-    /// <summary>A chunk record's times and records, checked against its CRC.</summary>
-    private (ulong Start, ulong End, ReadOnlyMemory<byte> Records) OpenChunk(ReadOnlyMemory<byte> body, long at)
-    {
-        ulong start = 0, end = 0;
-        var records = ReadOnlyMemory<byte>.Empty;
-        Parse(McapOpcode.Chunk, at, () =>
-        {
-            var r = new McapCursor(body);
-            start = r.U64();
-            end = r.U64();
-            var size = r.U64();
-            var crc = r.U32();
-            var compression = r.String();
-            records = McapCompression.Decompress(compression, r.Take(checked((int)r.U64())), size, () => Damaged($"the chunk at byte {at} is compressed with '{compression}', which robotctl does not read (it reads '', zstd)"));
-            if ((ulong)records.Length != size || (crc != 0 && Crc32.Compute(records.Span) != crc))
-            {
-                throw Damaged($"the chunk at byte {at}: its CRC does not match its records (the file is damaged)");
-            }
-        });
-        return (start, end, records);
-    }
-
-    /// <summary>Calls <paramref name="take"/> for each record in <paramref name="bytes"/> (which start at file byte <paramref name="at"/>).</summary>
-    private void EachRecord(ReadOnlyMemory<byte> bytes, long at, Action<McapOpcode, ReadOnlyMemory<byte>, long> take)
-    {
-        var r = new McapCursor(bytes);
-        while (r.Remaining > 0)
-        {
-            var start = at + r.Position;
-            var opcode = McapOpcode.Header;
-            var body = ReadOnlyMemory<byte>.Empty;
-            Parse(McapOpcode.Header, start, () =>
-            {
-                opcode = (McapOpcode)r.U8();
-                body = r.Take(checked((int)r.U64()));
-            });
-            Parse(opcode, start, () => take(opcode, body, start));
-        }
-    }
-
-    /// <summary>Runs <paramref name="parse"/>, turning a record that does not parse into one line naming it.</summary>
-    private void Parse(McapOpcode opcode, long at, Action parse)
-    {
-        try
-        {
-            parse();
-        }
-        catch (Exception ex) when (ex is ArgumentOutOfRangeException or IndexOutOfRangeException or DecoderFallbackException or OverflowException)
-        {
-            throw new InvalidDataException($"{Path}: the {opcode} record at byte {at} does not parse ({ex.Message})", ex);
-        }
-    }
-
-    private byte[] ReadBytes(long offset, int count)
-    {
-        if (offset < 0 || count < 0 || offset + count > _length)
-        {
-            throw Damaged($"a record at byte {offset} runs past the end of the file");
-        }
-
-        var bytes = GC.AllocateUninitializedArray<byte>(count);
-        var done = 0;
-        while (done < count)
-        {
-            var read = RandomAccess.Read(_handle, bytes.AsSpan(done), offset + done);
-            if (read == 0)
-            {
-                throw Damaged($"it ended while byte {offset + done} was being read");
-            }
-
-            done += read;
-        }
-
-        return bytes;
-    }
-
-    private InvalidDataException Damaged(string what) => new($"{Path}: {what}");
 
     /// <summary>One chunk's messages, being merged.</summary>
     private sealed class ChunkCursor(McapMessage[] messages, int order)

@@ -126,8 +126,8 @@ internal sealed class McapSummary
 
         b.EndLength32(map);
         b.U64(c.MessageIndexLength);
-        b.String(string.Empty);
-        b.U64(c.RecordsSize); // compressed size: uncompressed chunks
+        b.String(c.Compression);
+        b.U64(c.StoredSize);
         b.U64(c.RecordsSize);
         b.EndRecord(mark);
     }
@@ -158,7 +158,7 @@ internal sealed class McapSummary
 
     public sealed record ChannelEntry(ushort Id, ushort SchemaId, string Topic, string MessageEncoding, IReadOnlyDictionary<string, string> Metadata);
 
-    public sealed record ChunkEntry(ulong Start, ulong End, ulong Offset, ulong Length, Dictionary<ushort, ulong> MessageIndexOffsets, ulong MessageIndexLength, ulong RecordsSize);
+    public sealed record ChunkEntry(ulong Start, ulong End, ulong Offset, ulong Length, Dictionary<ushort, ulong> MessageIndexOffsets, ulong MessageIndexLength, string Compression, ulong StoredSize, ulong RecordsSize);
 
     public sealed record AttachmentEntry(ulong Offset, ulong Length, ulong LogTime, ulong DataSize, string Name, string MediaType);
 

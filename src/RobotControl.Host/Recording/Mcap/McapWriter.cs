@@ -1,8 +1,8 @@
 namespace RobotControl.Host.Recording.Mcap;
 
 /// <summary>
-/// Writes an MCAP file: magic, header, schemas and channels, messages in uncompressed chunks (each with its CRC-32 and
-/// followed by its message indexes), attachments and metadata, then the data end, the summary section (schemas,
+/// Writes an MCAP file: magic, header, schemas and channels, messages in chunks (uncompressed or zstd, each with the
+/// CRC-32 of its records and followed by its message indexes), attachments and metadata, then the data end, the summary section (schemas,
 /// channels, statistics, chunk/attachment/metadata indexes, summary offsets) and the footer. A chunk goes to the stream
 /// whole and the stream is flushed after it, so a file cut short (a kill, a crash) holds every message up to its last
 /// complete chunk, which a streaming reader reads. One thread writes (the recorder's writer thread); an
@@ -19,6 +19,7 @@ public sealed class McapWriter : IDisposable
     private readonly int _chunkBytes;
     private readonly ulong _chunkSpanNs;
     private readonly McapSummary _summary = new();
+    private readonly McapCompression _compression;
     private readonly Dictionary<ushort, List<(ulong Time, ulong Offset)>> _chunkIndexes = [];
     private readonly Dictionary<ushort, uint> _sequences = [];
     private long _position;
@@ -34,12 +35,14 @@ public sealed class McapWriter : IDisposable
     /// <param name="library">The header's library name.</param>
     /// <param name="chunkBytes">A chunk is closed once its records reach this size.</param>
     /// <param name="chunkSpan">A chunk is closed once its messages span this much log time (bounds what a kill loses).</param>
-    public McapWriter(Stream stream, string profile, string library, int chunkBytes = 512 * 1024, TimeSpan? chunkSpan = null)
+    /// <param name="compression">The chunks' compression: <see cref="McapCompression.None"/> or <see cref="McapCompression.Zstd"/>.</param>
+    public McapWriter(Stream stream, string profile, string library, int chunkBytes = 512 * 1024, TimeSpan? chunkSpan = null, string compression = McapCompression.None)
     {
         ArgumentNullException.ThrowIfNull(stream);
         ArgumentNullException.ThrowIfNull(profile);
         ArgumentNullException.ThrowIfNull(library);
         ArgumentOutOfRangeException.ThrowIfLessThan(chunkBytes, 64);
+        _compression = new McapCompression(compression);
         _stream = stream;
         _chunkBytes = chunkBytes;
         _chunk = new McapBuffer(chunkBytes + (chunkBytes / 4));
@@ -173,15 +176,16 @@ public sealed class McapWriter : IDisposable
         }
 
         var records = _chunk.Written;
+        var stored = _compression.Compress(records);
         var chunkOffset = _position;
         var mark = _out.BeginRecord(McapOpcode.Chunk);
         _out.U64(_chunkStart);
         _out.U64(_chunkEnd);
         _out.U64((ulong)records.Length);
-        _out.U32(Crc32.Compute(records));
-        _out.String(string.Empty); // uncompressed
-        _out.U64((ulong)records.Length);
-        _out.Raw(records);
+        _out.U32(Crc32.Compute(records)); // of the records, before compression
+        _out.String(_compression.Name);
+        _out.U64((ulong)stored.Length);
+        _out.Raw(stored);
         _out.EndRecord(mark);
         var chunkLength = _out.Length;
         var indexOffsets = new Dictionary<ushort, ulong>();
@@ -207,7 +211,7 @@ public sealed class McapWriter : IDisposable
             entries.Clear();
         }
 
-        _summary.Chunks.Add(new McapSummary.ChunkEntry(_chunkStart, _chunkEnd, (ulong)chunkOffset, (ulong)chunkLength, indexOffsets, (ulong)(_out.Length - chunkLength), (ulong)records.Length));
+        _summary.Chunks.Add(new McapSummary.ChunkEntry(_chunkStart, _chunkEnd, (ulong)chunkOffset, (ulong)chunkLength, indexOffsets, (ulong)(_out.Length - chunkLength), _compression.Name, (ulong)stored.Length, (ulong)records.Length));
         _chunk.Clear();
         _chunkMessages = 0;
         EmitData();
@@ -240,7 +244,11 @@ public sealed class McapWriter : IDisposable
     }
 
     /// <inheritdoc />
-    public void Dispose() => _stream.Dispose();
+    public void Dispose()
+    {
+        _stream.Dispose();
+        _compression.Dispose();
+    }
 
     /// <summary>Writes what <see cref="_out"/> holds as part of the data section (its CRC runs over it).</summary>
     private void EmitData()

@@ -69,6 +69,39 @@ public sealed class McapFileTests
         Assert.Equal(a, file.Channel("/a")!.Id);
     }
 
+    [Fact]
+    public void A_damaged_zstd_chunk_is_one_line_naming_the_chunk()
+    {
+        var path = Temp("zstd.mcap");
+        using (var writer = new McapWriter(File.Create(path), string.Empty, "test", chunkBytes: 4096, compression: McapCompression.Zstd))
+        {
+            var a = writer.AddChannel(writer.AddSchema("A", "jsonschema", "{}"u8), "/a", "json");
+            for (var i = 0; i < 2000; i++)
+            {
+                writer.WriteMessage(a, Ms(i), Encoding.UTF8.GetBytes($"{{\"x\":{i},\"y\":{i * 0.5}}}"));
+            }
+
+            writer.Finish();
+        }
+
+        long first;
+        using (var intact = McapFile.Open(path))
+        {
+            Assert.Equal(2000, intact.Messages().Count());
+            first = intact.Chunks[0].Offset;
+        }
+
+        var bytes = File.ReadAllBytes(path);
+        bytes[first + 80] ^= 0x5A; // inside the first chunk's compressed records
+        File.WriteAllBytes(path, bytes);
+        using var damaged = McapFile.Open(path);
+
+        var ex = Assert.Throws<InvalidDataException>(() => damaged.Messages().Count());
+
+        Assert.StartsWith($"{path}: the chunk at byte {first}: ", ex.Message, StringComparison.Ordinal);
+        Assert.Contains("damaged", ex.Message, StringComparison.Ordinal);
+    }
+
     private static ulong Ms(int ms) => (ulong)ms * 1_000_000UL;
 
     private static string Temp(string name) => Path.Combine(Directory.CreateTempSubdirectory("rc-mcapfile-").FullName, name);

@@ -16,11 +16,13 @@ public sealed class McapWriterTests
         Assert.Equal(0xCBF43926u, Crc32.Compute("123456789"u8));
     }
 
-    [Fact]
-    public void The_official_reader_counts_every_channel_as_the_writer_did_and_every_crc_checks()
+    [Theory]
+    [InlineData(McapCompression.None)]
+    [InlineData(McapCompression.Zstd)]
+    public void The_official_reader_counts_every_channel_as_the_writer_did_and_every_crc_checks(string compression)
     {
         var path = Temp("complete.mcap");
-        var counts = Write(path, messages: 3000, out _);
+        var counts = Write(path, messages: 3000, out _, compression);
 
         var check = McapCheck.Read(path);
 
@@ -34,6 +36,7 @@ public sealed class McapWriterTests
         Assert.Equal(0, check.BadJson);
         Assert.True(check.Chunks > 3, $"{check.Chunks} chunks");
         Assert.Equal(["robot.json"], check.Attachments);
+        Assert.Equal([compression], check.Compressions);
         using var own = McapFile.Open(path);
         Assert.True(own.Complete);
         Assert.True(own.Indexed);
@@ -94,10 +97,10 @@ public sealed class McapWriterTests
     private static string Temp(string name) => Path.Combine(Directory.CreateTempSubdirectory("rc-mcap-").FullName, name);
 
     /// <summary>Writes two JSON channels (two messages on one for every one on the other) in small chunks; returns the counts per topic and, per chunk, where it ended and the messages before that.</summary>
-    private static Dictionary<string, long> Write(string path, int messages, out List<(long End, long MessagesBefore)> chunkEnds)
+    private static Dictionary<string, long> Write(string path, int messages, out List<(long End, long MessagesBefore)> chunkEnds, string compression = McapCompression.None)
     {
         chunkEnds = [];
-        using var writer = new McapWriter(File.Create(path), string.Empty, "test", chunkBytes: 4096);
+        using var writer = new McapWriter(File.Create(path), string.Empty, "test", chunkBytes: 4096, compression: compression);
         writer.AddMetadata("run", new Dictionary<string, string> { ["seed"] = "1" });
         writer.AddAttachment("robot.json", "application/json", "{\"arm\":\"right\"}"u8, 0);
         var a = writer.AddChannel(writer.AddSchema("A", "jsonschema", "{\"type\":\"object\"}"u8), "/a", "json");
