@@ -94,27 +94,4 @@ public sealed partial class VirtualRobot
             ? index
             : throw new InvalidOperationException($"cannot {action} module {moduleId} ({_modules[index].Name}): it is not plugged in (connect it first)");
     }
-
-    private static void CheckFactoryOptions(VirtualRobotOptions options, int modules)
-    {
-        if (!options.Factory)
-        {
-            if (options.ConnectedAtStart != 0)
-            {
-                throw new ArgumentException("ConnectedAtStart: only modules from the factory are plugged in one at a time (set Factory)", nameof(options));
-            }
-
-            return;
-        }
-
-        if (options.BaudRate is { } baud && baud != FactoryBaud)
-        {
-            throw new ArgumentException($"BaudRate {baud}: modules from the factory run at the factory baud ({FactoryBaud}); commissioning moves them", nameof(options));
-        }
-
-        if (options.ConnectedAtStart < 0 || options.ConnectedAtStart > modules)
-        {
-            throw new ArgumentException($"ConnectedAtStart {options.ConnectedAtStart}: the robot has {modules} modules", nameof(options));
-        }
-    }
 }

@@ -60,7 +60,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         _clock = clock;
         _clockOrigin = clock.GetTimestamp();
         _modules = robot.Modules.Modules.ToArray();
-        CheckFactoryOptions(_options, _modules.Length);
+        _options.CheckFactory(_modules.Length);
         BaudRate = _options.Factory ? FactoryBaud : _options.BaudRate ?? robot.Modules.BaudRate;
         _physicsStepUs = Math.Max(1, (long)_options.PhysicsStep.TotalMicroseconds);
         _sensorNoise = new NoiseSource(_options.Seed);

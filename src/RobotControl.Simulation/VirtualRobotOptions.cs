@@ -53,4 +53,29 @@ public sealed record VirtualRobotOptions
 
     /// <summary>Gearhead backlash at the gearhead output, degrees (the catalogue's worst case is 3).</summary>
     public double BacklashDeg { get; init; } = 1;
+
+    /// <summary>Refuses factory settings that cannot be: a commissioned baud, more modules plugged in than <paramref name="modules"/>, plugging in without <see cref="Factory"/>.</summary>
+    /// <exception cref="ArgumentException">The message names the setting.</exception>
+    internal void CheckFactory(int modules)
+    {
+        if (!Factory)
+        {
+            if (ConnectedAtStart != 0)
+            {
+                throw new ArgumentException("ConnectedAtStart: only modules from the factory are plugged in one at a time (set Factory)");
+            }
+
+            return;
+        }
+
+        if (BaudRate is { } baud && baud != VirtualRobot.FactoryBaud)
+        {
+            throw new ArgumentException($"BaudRate {baud}: modules from the factory run at the factory baud ({VirtualRobot.FactoryBaud}); commissioning moves them");
+        }
+
+        if (ConnectedAtStart < 0 || ConnectedAtStart > modules)
+        {
+            throw new ArgumentException($"ConnectedAtStart {ConnectedAtStart}: the robot has {modules} modules");
+        }
+    }
 }

@@ -18,6 +18,11 @@ public sealed record PotVariation(double OffsetCounts, double Gain, double BowCo
     public PotCalibration Apply(PotCalibration design)
     {
         ArgumentNullException.ThrowIfNull(design);
+        if (this == None)
+        {
+            return design; // exactly the design, not the design rebuilt from its span
+        }
+
         var atMin = design.AdcAtMin + OffsetCounts;
         var atMax = atMin + ((design.AdcAtMax - design.AdcAtMin) * (1 + Gain));
         return design with { AdcAtMin = atMin, AdcAtMax = atMax, BowCounts = design.BowCounts + BowCounts };
