@@ -10,6 +10,9 @@ command -v clang-14 >/dev/null 2>&1 || command -v clang >/dev/null 2>&1 || need+
 [ -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ] || need+=(libclang-rt-14-dev)
 [ -e /usr/include/kdl/chain.hpp ] || need+=(liborocos-kdl-dev)
 command -v cmake >/dev/null 2>&1 || need+=(cmake)
+# firmware/flash.sh programs the KV11Z through OpenOCD; its test (firmware/tests/test_flash.sh) checks the target
+# configuration against OpenOCD's dummy adapter.
+command -v openocd >/dev/null 2>&1 || need+=(openocd)
 # The analysis maps' font (src/RobotControl.Analysis/Plotting/PlotFont.cs); SkiaSharp's NoDependencies build has no
 # fontconfig and finds no text font without it.
 [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf ] || need+=(fonts-dejavu-core)

@@ -1,21 +1,33 @@
 using RobotControl.Definitions.Model;
 using RobotControl.Modules;
 using RobotControl.Simulation.Models;
+using RobotControl.Simulation.Units;
 
 namespace RobotControl.Simulation;
 
 /// <summary>One simulated motor with its drivetrain, Hall sensors, current sense and pot: the truth a test compares against.</summary>
 public sealed class VirtualAxis
 {
-    internal VirtualAxis(MotorConfig config, int moduleIndex, DrivetrainModel model)
+    internal VirtualAxis(MotorConfig config, int moduleIndex, DrivetrainModel model, PotVariation potVariation)
     {
         Config = config;
         ModuleIndex = moduleIndex;
         Model = model;
+        PotVariation = potVariation;
+        TruePot = potVariation.Apply(config.Motor.Pot);
     }
 
     /// <summary>The motor as the robot file configures it.</summary>
     public MotorConfig Config { get; }
+
+    /// <summary>
+    /// The pot's true curve, which its readings follow: the robot file's design curve, or with unit variation
+    /// (<see cref="VirtualRobotOptions.UnitVariationSeed"/>) this unit's own. A calibration is checked against it.
+    /// </summary>
+    public PotCalibration TruePot { get; }
+
+    /// <summary>How <see cref="TruePot"/> differs from the design curve (<see cref="PotVariation.None"/> without unit variation).</summary>
+    public PotVariation PotVariation { get; }
 
     /// <summary>Axis output angle, radians (the truth).</summary>
     public double OutputAngleRad => Model.OutputAngle;

@@ -43,6 +43,7 @@ public sealed unsafe partial class VirtualRobot
             }
 
             (last, lastCpu) = (now, cpu);
+            RunPosted(); // modules plugged in or power-cycled from another thread
             if (pty is not null)
             {
                 FollowLineBaud(pty.ClientBaud); // the host re-opened its port at a new baud (after a baud change)

@@ -7,6 +7,7 @@ using RobotControl.Simulation.Bus;
 using RobotControl.Simulation.Models;
 using RobotControl.Simulation.Native;
 using RobotControl.Simulation.Time;
+using RobotControl.Simulation.Units;
 
 namespace RobotControl.Simulation;
 
@@ -18,7 +19,11 @@ namespace RobotControl.Simulation;
 /// (<see cref="OpenLink"/>), when told (<see cref="Advance"/>), or with the wall clock (<see cref="Serve"/>).
 /// Faults: wire bit errors and lost bytes (<see cref="WireFaults"/>), module resets at a given time
 /// (<see cref="ScheduleReset"/>), power cycles, stalled motors (<see cref="VirtualAxis.ObstacleTorqueNm"/>).
-/// Not thread-safe: one thread drives it (the links it hands out run on the caller's thread).
+/// From the factory (<see cref="VirtualRobotOptions.Factory"/>): blank modules at the default ID, plugged in one at a
+/// time. A unit's own pot curves: <see cref="VirtualRobotOptions.UnitVariationSeed"/>, <see cref="VirtualAxis.TruePot"/>.
+/// A module is named by its ID in the robot file, whatever ID it answers at.
+/// Not thread-safe: one thread drives it (the links it hands out run on the caller's thread; <see cref="Post"/> hands
+/// it work from another).
 /// </summary>
 public sealed unsafe partial class VirtualRobot : IDisposable
 {
@@ -55,7 +60,8 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         _clock = clock;
         _clockOrigin = clock.GetTimestamp();
         _modules = robot.Modules.Modules.ToArray();
-        BaudRate = _options.BaudRate ?? robot.Modules.BaudRate;
+        _options.CheckFactory(_modules.Length);
+        BaudRate = _options.Factory ? FactoryBaud : _options.BaudRate ?? robot.Modules.BaudRate;
         _physicsStepUs = Math.Max(1, (long)_options.PhysicsStep.TotalMicroseconds);
         _sensorNoise = new NoiseSource(_options.Seed);
         _wireNoise = new NoiseSource(_options.Seed * 7919);
@@ -64,7 +70,8 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         var motorCounts = _modules.Select(m => (byte)Math.Max(1, m.Motors.Count == 0 ? 1 : m.Motors.Max(x => x.Channel) + 1)).ToArray();
         fixed (byte* pi = ids, pm = motorCounts)
         {
-            _bus = FirmwareHost.BusCreate(ids.Length, pi, pm);
+            // From the factory, nothing is written: every module keeps the firmware's default ID.
+            _bus = FirmwareHost.BusCreate(ids.Length, _options.Factory ? null : pi, pm);
         }
 
         if (_bus == 0)
@@ -76,6 +83,9 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         FirmwareHost.Check(FirmwareHost.BusSetBaud(_bus, (uint)FactoryBaud), "rcfw_bus_set_baud");
         _byteUs = 10e6 / FactoryBaud;
         var axes = new List<VirtualAxis>();
+        var variations = _options.UnitVariationSeed is { } unit
+            ? PotVariation.Draw(unit, _modules.Sum(m => m.Motors.Count), PotVariationBounds.Default)
+            : null;
         for (var mi = 0; mi < _modules.Length; mi++)
         {
             foreach (var motor in _modules[mi].Motors)
@@ -87,7 +97,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
                     HardStops = (config.OutputMinRad - 0.05, config.OutputMaxRad + 0.05),
                 };
                 model.Reset(InitialOutput(robot, config));
-                axes.Add(new VirtualAxis(config, mi, model));
+                axes.Add(new VirtualAxis(config, mi, model, variations?[axes.Count] ?? PotVariation.None));
             }
         }
 
@@ -105,7 +115,17 @@ public sealed unsafe partial class VirtualRobot : IDisposable
             FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, mi), "rcfw_power_cycle");
         }
 
-        if (_options.Commissioned)
+        _connected = new bool[_modules.Length];
+        for (var mi = 0; mi < _modules.Length; mi++)
+        {
+            _connected[mi] = !_options.Factory || mi < _options.ConnectedAtStart;
+            if (!_connected[mi])
+            {
+                FirmwareHost.Check(FirmwareHost.PowerOff(_bus, mi), "rcfw_power_off"); // still in the box
+            }
+        }
+
+        if (_options.Commissioned && !_options.Factory)
         {
             Commission();
         }
@@ -163,7 +183,8 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     }
 
     /// <summary>Switches module <paramref name="moduleId"/> off and on (RAM lost, FRAM kept).</summary>
-    public void PowerCycle(byte moduleId) => FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, ModuleIndex(moduleId)), "rcfw_power_cycle");
+    /// <exception cref="InvalidOperationException">The module is not plugged in (<see cref="VirtualRobotOptions.Factory"/>).</exception>
+    public void PowerCycle(byte moduleId) => FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, ConnectedIndex(moduleId, "power-cycle")), "rcfw_power_cycle");
 
     /// <summary>
     /// Switches <paramref name="axis"/>'s module off, turns the axis by hand to <paramref name="outputRad"/> (its
@@ -184,6 +205,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
             throw new ArgumentException($"the angle to turn {axis.Config.FullName} to must be finite", nameof(outputRad));
         }
 
+        _ = ConnectedIndex(axis.Config.ModuleId, "turn while off");
         axis.Model.Reset(outputRad);
         axis.LastSector = Sector(axis);
         // The Hall edge this causes reaches firmware that is about to lose its RAM: the power cycle restarts it from
@@ -368,7 +390,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
             var current = (Math.Abs(axis.Model.Current) + axis.CurrentSenseOffsetA) * axis.Config.RawPerAmp + _sensorNoise.Gaussian(_options.CurrentNoiseCounts);
             _ = FirmwareHost.SetCurrentRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(current), 0, 4095));
             var noise = _sensorNoise.Gaussian(_options.PotNoiseCounts);
-            var pot = axis.PotFailedRaw ?? (axis.Config.Motor.Pot.Reading(axis.Model.OutputAngle) + noise);
+            var pot = axis.PotFailedRaw ?? (axis.TruePot.Reading(axis.Model.OutputAngle) + noise);
             _ = FirmwareHost.SetPotRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(pot), 0, 4095));
         }
     }

@@ -24,6 +24,24 @@ public sealed record VirtualRobotOptions
     /// </summary>
     public bool Commissioned { get; init; } = true;
 
+    /// <summary>
+    /// True: a box of boards fresh from the factory. Every module has blank FRAM (the firmware's defaults, at the
+    /// control table's default ID and baud; nothing commissioned, whatever <see cref="Commissioned"/> says), and only
+    /// the first <see cref="ConnectedAtStart"/> are plugged in; <see cref="VirtualRobot.ConnectNext"/> plugs in the
+    /// next, as a lab connects one board at a time.
+    /// </summary>
+    public bool Factory { get; init; }
+
+    /// <summary>With <see cref="Factory"/>: how many modules (in the robot file's order) are plugged in at power-on.</summary>
+    public int ConnectedAtStart { get; init; }
+
+    /// <summary>
+    /// Seed of this unit's pot curves: each pot's true curve differs from the robot file's design curve by an offset,
+    /// a gain and a bow drawn within <see cref="Units.PotVariationBounds.Default"/> (same seed, same unit). Null: the
+    /// pots follow the design curves.
+    /// </summary>
+    public int? UnitVariationSeed { get; init; }
+
     /// <summary>Standard deviation of the current readings, ADC counts.</summary>
     public double CurrentNoiseCounts { get; init; } = 2;
 
@@ -35,4 +53,29 @@ public sealed record VirtualRobotOptions
 
     /// <summary>Gearhead backlash at the gearhead output, degrees (the catalogue's worst case is 3).</summary>
     public double BacklashDeg { get; init; } = 1;
+
+    /// <summary>Refuses factory settings that cannot be: a commissioned baud, more modules plugged in than <paramref name="modules"/>, plugging in without <see cref="Factory"/>.</summary>
+    /// <exception cref="ArgumentException">The message names the setting.</exception>
+    internal void CheckFactory(int modules)
+    {
+        if (!Factory)
+        {
+            if (ConnectedAtStart != 0)
+            {
+                throw new ArgumentException("ConnectedAtStart: only modules from the factory are plugged in one at a time (set Factory)");
+            }
+
+            return;
+        }
+
+        if (BaudRate is { } baud && baud != VirtualRobot.FactoryBaud)
+        {
+            throw new ArgumentException($"BaudRate {baud}: modules from the factory run at the factory baud ({VirtualRobot.FactoryBaud}); commissioning moves them");
+        }
+
+        if (ConnectedAtStart < 0 || ConnectedAtStart > modules)
+        {
+            throw new ArgumentException($"ConnectedAtStart {ConnectedAtStart}: the robot has {modules} modules");
+        }
+    }
 }

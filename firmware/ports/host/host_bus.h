@@ -56,5 +56,7 @@ struct rcfw_port *host_port_of(const rcfw_bus *bus, int32_t module);
 int32_t host_check_motor(const rcfw_bus *bus, int32_t module, int32_t motor, struct rcfw_port **out);
 /* Powers the module up and starts its firmware with reset cause `cause`. */
 void host_boot(struct rcfw_port *p, uint8_t cause);
+/* Cuts the module's power: it stops (no ticks, no bus, outputs off) until rcfw_power_cycle. */
+void host_power_fail(struct rcfw_port *p);
 
 #endif

@@ -84,7 +84,7 @@ void rcfw_hal_uart_send(struct rcfw_port *p, const uint8_t *buf, uint16_t len, u
     }
 }
 
-static void power_fail(struct rcfw_port *p)
+void host_power_fail(struct rcfw_port *p)
 {
     p->powered = 0;
     memset(p->pwm, 0, sizeof p->pwm);
@@ -107,7 +107,7 @@ bool rcfw_hal_fram_write(struct rcfw_port *p, uint16_t addr, const uint8_t *buf,
     }
     for (uint16_t i = 0; i < len; i++) {
         if (p->cut_remaining == 0) {
-            power_fail(p);
+            host_power_fail(p);
             return false;
         }
         if (p->cut_remaining > 0) {
@@ -140,14 +140,14 @@ void host_boot(struct rcfw_port *p, uint8_t cause)
 /* ---- API ---- */
 rcfw_bus *rcfw_bus_create(int32_t n_modules, const uint8_t *ids, const uint8_t *motors_per_module)
 {
-    if (n_modules < 1 || n_modules > 253 || !ids || !motors_per_module) {
+    if (n_modules < 1 || n_modules > 253 || !motors_per_module) {
         return NULL;
     }
     for (int32_t i = 0; i < n_modules; i++) {
-        if (ids[i] > 252 || motors_per_module[i] < 1 || motors_per_module[i] > RCFW_HOST_MAX_MOTORS) {
+        if ((ids && ids[i] > 252) || motors_per_module[i] < 1 || motors_per_module[i] > RCFW_HOST_MAX_MOTORS) {
             return NULL;
         }
-        for (int32_t j = 0; j < i; j++) {
+        for (int32_t j = 0; ids && j < i; j++) {
             if (ids[j] == ids[i]) {
                 return NULL;
             }
@@ -172,6 +172,9 @@ rcfw_bus *rcfw_bus_create(int32_t n_modules, const uint8_t *ids, const uint8_t *
         p->cut_remaining = -1;
         memset(p->hall, 1, sizeof p->hall);
         host_boot(p, RCFW_RESET_POWER_ON);
+        if (!ids) {
+            continue; /* fresh from the factory: the firmware's defaults, as blank FRAM gives them */
+        }
         /* factory image: the module's ID, then a clean error state */
         uint8_t zero = 0;
         (void)rcfw_module_write(&p->mod, RCFW_CT_ID, &ids[i], 1);

@@ -70,7 +70,9 @@ typedef struct rcfw_bus rcfw_bus;
  * (0..252, distinct) written into module i's FRAM as a factory image;
  * motors_per_module[i] is 1..4. Each module starts with blank FRAM, factory
  * defaults (baud 1 Mbaud, return delay 0), reset cause power-on, all Hall inputs
- * at state 1, current 0, pot 0. Returns NULL on bad arguments. */
+ * at state 1, current 0, pot 0. ids NULL: boards fresh from the factory, nothing
+ * written, so every module answers at the control table's default ID and reports
+ * what blank FRAM gives (parameters lost). Returns NULL on bad arguments. */
 RCFW_HOST_API rcfw_bus *rcfw_bus_create(int32_t n_modules, const uint8_t *ids,
                                         const uint8_t *motors_per_module);
 RCFW_HOST_API void rcfw_bus_destroy(rcfw_bus *bus);
@@ -131,6 +133,9 @@ RCFW_HOST_API int32_t rcfw_is_powered(const rcfw_bus *bus, int32_t module);
 /* ---- power, reset, FRAM ---- */
 /* Power off and on: RAM state is lost, FRAM kept; reset cause = power-on. */
 RCFW_HOST_API int32_t rcfw_power_cycle(rcfw_bus *bus, int32_t module);
+/* Power off (the module is unplugged): RAM state lost, FRAM kept, no ticks, no bus,
+ * outputs off, until rcfw_power_cycle powers it on again. */
+RCFW_HOST_API int32_t rcfw_power_off(rcfw_bus *bus, int32_t module);
 /* Reset with a given cause (RCFW_RESET_*), e.g. EMI brown-out. FRAM kept. */
 RCFW_HOST_API int32_t rcfw_reset(rcfw_bus *bus, int32_t module, uint8_t cause);
 /* After n_bytes more FRAM bytes are written the module loses power: the write in

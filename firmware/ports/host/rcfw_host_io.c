@@ -121,6 +121,16 @@ int32_t rcfw_power_cycle(rcfw_bus *bus, int32_t module)
     return RCFW_HOST_OK;
 }
 
+int32_t rcfw_power_off(rcfw_bus *bus, int32_t module)
+{
+    struct rcfw_port *p = host_port_of(bus, module);
+    if (!p) {
+        return RCFW_HOST_EARG;
+    }
+    host_power_fail(p);
+    return RCFW_HOST_OK;
+}
+
 int32_t rcfw_reset(rcfw_bus *bus, int32_t module, uint8_t cause)
 {
     struct rcfw_port *p = host_port_of(bus, module);

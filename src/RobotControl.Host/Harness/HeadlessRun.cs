@@ -298,9 +298,12 @@ public static class HeadlessRun
         }
     }
 
-    /// <summary>The bus ID of the module an <c>--inject</c> fault names (<c>arm.location</c>, its name or its ID).</summary>
+    /// <summary>
+    /// The bus ID of the module an <c>--inject</c> fault names (<c>arm.location</c>, its name or its ID); a refusal names
+    /// <paramref name="asked"/> as what asked (another command's word for it, e.g. bus-sim's <c>connect</c>).
+    /// </summary>
     /// <exception cref="FormatException">No such module (the message lists them).</exception>
-    public static byte ResolveModule(RobotDefinition robot, string module)
+    public static byte ResolveModule(RobotDefinition robot, string module, string asked = "--inject")
     {
         ArgumentNullException.ThrowIfNull(robot);
         ArgumentNullException.ThrowIfNull(module);
@@ -318,7 +321,7 @@ public static class HeadlessRun
             }
         }
 
-        throw new FormatException($"--inject: no module '{module}' (known: {string.Join(", ", robot.Modules.Modules.Select(m => $"{(m.Arm >= 0 && m.Arm < robot.Arms.Count ? robot.Arms[m.Arm].Name : "?")}.{m.Location} (id {m.Id})"))})");
+        throw new FormatException($"{asked}: no module '{module}' (known: {string.Join(", ", robot.Modules.Modules.Select(m => $"{(m.Arm >= 0 && m.Arm < robot.Arms.Count ? robot.Arms[m.Arm].Name : "?")}.{m.Location} (id {m.Id})"))})");
     }
 
     /// <summary>Runs an action when disposed (puts a process-wide setting back after a run, however it ends).</summary>

@@ -63,6 +63,9 @@ internal static unsafe partial class FirmwareHost
     [LibraryImport(Library, EntryPoint = "rcfw_power_cycle")]
     public static partial int PowerCycle(nint bus, int module);
 
+    [LibraryImport(Library, EntryPoint = "rcfw_power_off")]
+    public static partial int PowerOff(nint bus, int module);
+
     [LibraryImport(Library, EntryPoint = "rcfw_reset")]
     public static partial int Reset(nint bus, int module, byte cause);
 

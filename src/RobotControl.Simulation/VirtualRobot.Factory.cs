@@ -1,0 +1,97 @@
+using System.Collections.Concurrent;
+using RobotControl.Bus.Protocol;
+using RobotControl.Simulation.Native;
+
+namespace RobotControl.Simulation;
+
+/// <summary>
+/// A box of boards (<see cref="VirtualRobotOptions.Factory"/>): modules fresh from the factory, all at the default ID,
+/// plugged in one at a time. A module is named by its ID in the robot file (which board it is, whatever ID it answers
+/// at now); unplugged, it neither hears nor answers and keeps only its FRAM.
+/// </summary>
+public sealed partial class VirtualRobot
+{
+    private readonly bool[] _connected;
+    private readonly ConcurrentQueue<Action<VirtualRobot>> _posted = new();
+
+    /// <summary>The ID a module fresh from the factory answers at (the control table's default <c>id</c>).</summary>
+    public static byte FactoryId => (byte)ControlTable.Firmware["id"].Default;
+
+    /// <summary>True when the modules came from the factory (<see cref="VirtualRobotOptions.Factory"/>).</summary>
+    public bool IsFactory => _options.Factory;
+
+    /// <summary>True when the module the robot file numbers <paramref name="moduleId"/> is plugged in.</summary>
+    /// <exception cref="KeyNotFoundException">The robot file has no such module.</exception>
+    public bool IsConnected(byte moduleId) => _connected[ModuleIndex(moduleId)];
+
+    /// <summary>Plugs in the next module still in the box (robot file order); returns its robot-file ID, or null when all are in.</summary>
+    public byte? ConnectNext()
+    {
+        var next = Array.IndexOf(_connected, false);
+        if (next < 0)
+        {
+            return null;
+        }
+
+        Connect(_modules[next].Id);
+        return _modules[next].Id;
+    }
+
+    /// <summary>Plugs module <paramref name="moduleId"/> in: it powers on from its FRAM (nothing happens when it already is).</summary>
+    /// <exception cref="KeyNotFoundException">The robot file has no such module.</exception>
+    public void Connect(byte moduleId)
+    {
+        var index = ModuleIndex(moduleId);
+        if (!_connected[index])
+        {
+            FeedSensors();
+            FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, index), "rcfw_power_cycle");
+            _connected[index] = true;
+        }
+    }
+
+    /// <summary>Unplugs module <paramref name="moduleId"/>: its power goes, its FRAM stays.</summary>
+    /// <exception cref="KeyNotFoundException">The robot file has no such module.</exception>
+    public void Disconnect(byte moduleId)
+    {
+        var index = ModuleIndex(moduleId);
+        FirmwareHost.Check(FirmwareHost.PowerOff(_bus, index), "rcfw_power_off");
+        _connected[index] = false;
+    }
+
+    /// <summary>The ID module <paramref name="moduleId"/> (the robot file's) answers at now, read from its table (not over the bus).</summary>
+    /// <exception cref="InvalidOperationException">The module is not plugged in.</exception>
+    public byte BusId(byte moduleId)
+    {
+        _ = ConnectedIndex(moduleId, "read the ID of");
+        Span<byte> id = stackalloc byte[1];
+        PeekTable(moduleId, (ushort)ControlTable.Firmware["id"].At(0), id);
+        return id[0];
+    }
+
+    /// <summary>
+    /// Hands <paramref name="change"/> to the thread that runs the simulation (thread-safe): <see cref="Serve"/> applies
+    /// it between two turns. The way another thread (a console's stdin) plugs modules in or power-cycles them.
+    /// </summary>
+    public void Post(Action<VirtualRobot> change)
+    {
+        ArgumentNullException.ThrowIfNull(change);
+        _posted.Enqueue(change);
+    }
+
+    private void RunPosted()
+    {
+        while (_posted.TryDequeue(out var change))
+        {
+            change(this);
+        }
+    }
+
+    private int ConnectedIndex(byte moduleId, string action)
+    {
+        var index = ModuleIndex(moduleId);
+        return _connected[index]
+            ? index
+            : throw new InvalidOperationException($"cannot {action} module {moduleId} ({_modules[index].Name}): it is not plugged in (connect it first)");
+    }
+}
