@@ -60,6 +60,9 @@ internal sealed class ConsoleRecording(RobotSession session, RecordingTap tap, S
         }
     }
 
+    /// <summary>Notes an operator command in the recording, if one runs (any thread: the recorder queues it for its writer).</summary>
+    public void Note(string who, string what) => Volatile.Read(ref _recorder)?.OperatorCommand(who, what);
+
     /// <summary>Stops the recording (the session's stop, after the motors are off); says what was written, or null.</summary>
     public string? Stop()
     {

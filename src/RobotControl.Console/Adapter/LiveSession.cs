@@ -125,6 +125,9 @@ public sealed class LiveSession : IConsoleSession
     public string? RecordingFile => _mcap.File;
 
     /// <inheritdoc />
+    public void NoteCommand(string who, string what) => _mcap.Note(who, what);
+
+    /// <inheritdoc />
     public Task<CommandResult> RecordAsync(bool on) => Task.Run(() => _mcap.Record(on)); // file I/O off the caller's thread
 
     /// <inheritdoc />

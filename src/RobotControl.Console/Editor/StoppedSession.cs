@@ -39,6 +39,11 @@ internal sealed class StoppedSession : IConsoleSession
 
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
 
+    public void NoteCommand(string who, string what)
+    {
+        // no session runs: nothing is recorded
+    }
+
     public string? RecordingFile => null;
 
     public Task<CommandResult> RecordAsync(bool on) => Refused();

@@ -47,6 +47,9 @@ public sealed class SwitchableSession : IConsoleSession
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => _current.SetScaleAsync(arm, ratio);
 
     /// <inheritdoc />
+    public void NoteCommand(string who, string what) => _current.NoteCommand(who, what);
+
+    /// <inheritdoc />
     public string? RecordingFile => _current.RecordingFile;
 
     /// <inheritdoc />

@@ -143,6 +143,12 @@ public sealed class ReplaySession : IConsoleSession
     public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
 
     /// <inheritdoc />
+    public void NoteCommand(string who, string what)
+    {
+        // a replay records nothing
+    }
+
+    /// <inheritdoc />
     public string? RecordingFile => null;
 
     /// <inheritdoc />

@@ -10,7 +10,7 @@ namespace RobotControl.WebConsole.Server;
 /// <list type="number">
 /// <item>the <c>Host</c> header must be one of <see cref="HostAllowList"/>'s (403 otherwise: DNS rebinding);</item>
 /// <item><c>POST /api/estop</c> is answered right here, before the token, the origin, the rate limits and routing:
-/// stopping is never a privilege and never waits;</item>
+/// stopping is never a privilege and never waits (it is noted in the session's recording after it is answered);</item>
 /// <item>every other <c>/api</c> request needs the session's token, as <c>Authorization: Bearer &lt;token&gt;</c> or
 /// <c>?token=</c> (the WebSocket; 401 otherwise). The pages themselves (no session data) are served without it: the
 /// page reads the token from the URL the console printed;</item>
@@ -20,7 +20,7 @@ namespace RobotControl.WebConsole.Server;
 /// Every response gets the security headers (<see cref="SecurityHeaders"/>), and an unexpected failure is a JSON 500
 /// with one line, never an empty body or a stack trace.
 /// </summary>
-internal sealed class AccessControl(string token, HostAllowList hosts, IConsoleSession session)
+internal sealed class AccessControl(string token, HostAllowList hosts, IConsoleSession session, OperatorRole role)
 {
     private readonly byte[] _token = Encoding.UTF8.GetBytes(token);
 
@@ -42,7 +42,9 @@ internal sealed class AccessControl(string token, HostAllowList hosts, IConsoleS
         if (HttpMethods.IsPost(request.Method) && request.Path.Equals("/api/estop", StringComparison.Ordinal))
         {
             // Any console, watching or operating, with or without the token: stopping is never a privilege.
-            await ApiEndpoints.Result(await session.EmergencyStopAsync().ConfigureAwait(false)).ExecuteAsync(context).ConfigureAwait(false);
+            var answer = ApiEndpoints.Result(await session.EmergencyStopAsync().ConfigureAwait(false));
+            await answer.ExecuteAsync(context).ConfigureAwait(false);
+            session.NoteCommand(CommandWitness.Who(context, role), $"POST /api/estop -> {CommandWitness.Answer(answer)}"); // after the stop, never before
             return;
         }
 

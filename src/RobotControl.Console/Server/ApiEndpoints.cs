@@ -39,7 +39,7 @@ internal static class ApiEndpoints
             return role.TryClaim(client)
                 ? Json(OperatorView(http, role))
                 : Error(StatusCodes.Status409Conflict, "another console holds the operator role; this one watches");
-        });
+        }).Witnessed(session, role);
         api.MapDelete("/operator", (HttpContext http) =>
         {
             if (ClientOf(http) is { } client)
@@ -48,10 +48,10 @@ internal static class ApiEndpoints
             }
 
             return Json(OperatorView(http, role));
-        });
+        }).Witnessed(session, role);
 
         // POST /api/estop is answered by AccessControl, before the token, the rate limits and routing: any console may stop.
-        var actions = OperatorOnly(api.MapGroup(string.Empty), role);
+        var actions = OperatorOnly(api.MapGroup(string.Empty).Witnessed(session, role), role); // noted first: a refused command is noted too
         actions.MapPost("/controllers/{id:int}/reload", async (int id) => Result(await session.ReloadParametersAsync(id).ConfigureAwait(false))).RequireRateLimiting(RateLimits.Bus);
         actions.MapPost("/discover", async () => Result(await session.DiscoverAsync().ConfigureAwait(false))).RequireRateLimiting(RateLimits.Bus);
         actions.MapPost("/torque", async (HttpRequest request) =>

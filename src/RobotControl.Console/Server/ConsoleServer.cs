@@ -75,7 +75,7 @@ public sealed class ConsoleServer : IAsyncDisposable
         var app = builder.Build();
         var server = new ConsoleServer(app, token, new OperatorRole(options.Time));
         var host = PrintedHost(bind);
-        var access = new AccessControl(token, new HostAllowList(bind, options.AllowedHosts, host), session);
+        var access = new AccessControl(token, new HostAllowList(bind, options.AllowedHosts, host), session, server.Operator);
         if (options.First is not null)
         {
             app.Use(options.First);

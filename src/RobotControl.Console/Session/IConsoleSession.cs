@@ -88,6 +88,9 @@ public interface IConsoleSession : IDisposable
     /// <summary>The MCAP file the session is being recorded to now (docs/recording.md), or null.</summary>
     string? RecordingFile { get; }
 
+    /// <summary>Notes an operator command the console answered (who sent it, what it was and the answer) in the session's recording, if it is being recorded; from any thread, never waiting.</summary>
+    void NoteCommand(string who, string what);
+
     /// <summary>Starts recording the session to a new file in its recordings folder, or stops the recording (the record button).</summary>
     Task<CommandResult> RecordAsync(bool on);
 
