@@ -28,6 +28,7 @@ internal sealed class RecordingChannels : IDisposable
     private readonly ChainState _measured;
     private readonly ChainState _commanded;
     private readonly UrdfLinkFrames _links;
+    private readonly (string Model, string Measured, string Setpoint)[] _toolFrames;
     private readonly string[] _jointNames;
     private readonly string[] _actuatorNames;
     private readonly (string Instance, string Port)[] _signalNames;
@@ -55,6 +56,7 @@ internal sealed class RecordingChannels : IDisposable
         _measured = chain.CreateState();
         _commanded = chain.CreateState();
         _links = new UrdfLinkFrames(robot);
+        _toolFrames = [.. layout.Arms.Select(a => (a.Name + "_model", UrdfExport.ToolLinkName(a.Name) + "_measured", UrdfExport.ToolLinkName(a.Name) + "_setpoint"))];
     }
 
     public ushort RunLevel { get; }
@@ -161,12 +163,14 @@ internal sealed class RecordingChannels : IDisposable
         var json = Begin();
         json.WriteStartObject();
         json.WriteStartArray("transforms");
-        foreach (var slot in _layout.Arms)
+        for (var arm = 0; arm < _layout.Arms.Count; arm++)
         {
+            var slot = _layout.Arms[arm];
+            var (model, measured, setpoint) = _toolFrames[arm];
             _measured.Update(row.Slice(slot.Positions, _jointNames.Length));
             _commanded.Update(row.Slice(slot.Setpoints, _jointNames.Length));
-            Transform(json, logTimeNs, slot.Name + "_model", UrdfExport.ToolLinkName(slot.Name) + "_measured", _measured.ToolPose);
-            Transform(json, logTimeNs, slot.Name + "_model", UrdfExport.ToolLinkName(slot.Name) + "_setpoint", _commanded.ToolPose);
+            Transform(json, logTimeNs, model, measured, _measured.ToolPose);
+            Transform(json, logTimeNs, model, setpoint, _commanded.ToolPose);
         }
 
         for (var i = 0; links && i < _links.Count; i++)

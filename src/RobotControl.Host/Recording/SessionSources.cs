@@ -19,7 +19,7 @@ internal sealed class SessionSources(SafetySupervisor supervisor, BusRobot bus, 
     /// <summary>Writes what happened since the last call: transitions, trips, commands at their times; nothing else.</summary>
     public void Events(ulong nowNs)
     {
-        var history = supervisor.History;
+        var history = supervisor.HistoryCount > _levels ? supervisor.History : []; // the copy (and its lock, which the bus thread takes to move) only when there is news
         for (; _levels < history.Count; _levels++)
         {
             var h = history[_levels];
@@ -33,7 +33,7 @@ internal sealed class SessionSources(SafetySupervisor supervisor, BusRobot bus, 
             channels.Write(channels.RunLevel, At(supervisor.Seconds(h.Timestamp), nowNs));
         }
 
-        var trips = supervisor.Trips;
+        var trips = supervisor.TripCount > _trips ? supervisor.Trips : [];
         for (; _trips < trips.Count; _trips++)
         {
             var t = trips[_trips];

@@ -104,6 +104,12 @@ public sealed partial class SafetySupervisor : ICycleCheck, IOperatorPort
     /// <summary>Every run-level change, oldest first.</summary>
     public IReadOnlyList<StateTransition<RunLevel>> History => _levels.History;
 
+    /// <summary>Run-level changes so far, without a lock or a copy (poll this, copy <see cref="History"/> when it grew).</summary>
+    public int HistoryCount => _levels.MoveCount;
+
+    /// <summary>Trips so far, without a lock or a copy (poll this, copy <see cref="Trips"/> when it grew).</summary>
+    public int TripCount => _trips.Count;
+
     /// <summary>Every trip, oldest first (a copy).</summary>
     public IReadOnlyList<SafetyTrip> Trips => _trips.All;
 

@@ -14,8 +14,12 @@ internal sealed class TripLog
 {
     private readonly List<SafetyTrip> _trips = new(32);
     private readonly Lock _gate = new();
+    private int _count;
     private readonly bool[] _tripped = new bool[Enum.GetValues<SafetyCheck>().Length];
     private readonly bool[] _softTripped = new bool[Enum.GetValues<SafetyCheck>().Length];
+
+    /// <summary>Trips so far, read without the lock: a reader that polls copies <see cref="All"/> only when it grew.</summary>
+    public int Count => Volatile.Read(ref _count);
 
     /// <summary>Every trip so far, oldest first (a copy).</summary>
     public IReadOnlyList<SafetyTrip> All
@@ -68,6 +72,7 @@ internal sealed class TripLog
             flags[(int)check] = true;
             var trip = new SafetyTrip(now, check, joint, measured, limit, unit, action, soft);
             _trips.Add(trip);
+            Volatile.Write(ref _count, _trips.Count);
             return trip;
         }
     }

@@ -23,6 +23,7 @@ public sealed class StateMachine<TState>
     private readonly Func<TState, string> _nameOf;
     private readonly Dictionary<TState, Declaration> _declared = [];
     private readonly List<StateTransition<TState>> _history = [];
+    private int _moves;
     private volatile StrongBox<TState> _current; // replaced whole on a move: a reader never sees a torn state
 
     /// <summary>A machine in <paramref name="initial"/>, timing its moves on <paramref name="time"/>.</summary>
@@ -45,6 +46,9 @@ public sealed class StateMachine<TState>
 
     /// <summary>The state now.</summary>
     public TState Current => _current.Value;
+
+    /// <summary>Moves so far, read without the lock: a reader that polls copies <see cref="History"/> only when it grew.</summary>
+    public int MoveCount => Volatile.Read(ref _moves);
 
     /// <summary>Every move so far, oldest first (a copy).</summary>
     public IReadOnlyList<StateTransition<TState>> History
@@ -105,6 +109,7 @@ public sealed class StateMachine<TState>
             }
 
             _history.Add(new StateTransition<TState>(_time.GetTimestamp(), from, to, source, reason));
+            Volatile.Write(ref _moves, _history.Count);
             _current = new StrongBox<TState>(to);
             enter = target.Enter;
         }

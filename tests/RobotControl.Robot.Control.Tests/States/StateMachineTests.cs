@@ -26,6 +26,20 @@ public sealed class StateMachineTests
     }
 
     [Fact]
+    public void The_move_count_follows_the_history_and_a_stay_or_a_refused_move_does_not_count()
+    {
+        var m = Machine(new SteppedClock());
+        Assert.Equal(0, m.MoveCount);
+        m.MoveTo(Door.Opening, "operator", "open button");
+        m.MoveTo(Door.Opening, "operator", "pressed again");
+        Assert.Throws<InvalidOperationException>(() => m.MoveTo(Door.Locked, "operator", "lock while opening"));
+        m.MoveTo(Door.Open, "motor", "fully open");
+
+        Assert.Equal(2, m.MoveCount);
+        Assert.Equal(m.History.Count, m.MoveCount);
+    }
+
+    [Fact]
     public void Every_move_runs_the_enter_action_once_and_is_recorded_with_time_source_and_reason()
     {
         var clock = new SteppedClock();
