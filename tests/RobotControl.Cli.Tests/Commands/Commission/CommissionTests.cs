@@ -96,6 +96,43 @@ public sealed partial class CommissionTests : IDisposable
     }
 
     [Fact]
+    public void A_module_cut_off_halfway_through_its_parameters_is_redone_on_the_next_run()
+    {
+        using var sim = StartSim(out var transport);
+        using (var first = Commission(transport, "lb-0006"))
+        {
+            ConnectAsAsked(sim, first, 1, 2);
+            Assert.Equal(11, Prompted(first, 3));
+            first.Signal("INT"); // the operator stops it (Ctrl+C) while it waits for the left shoulder
+            Assert.NotEqual(0, first.WaitForExit(Patience));
+        }
+
+        // The left shoulder as a stopped run leaves it: numbered, one parameter written wrong, the rest at their
+        // defaults; then the power goes off and on (its FRAM keeps all of it).
+        sim.Type("connect 11");
+        sim.WaitFor("connected module 11 ", Patience);
+        using (var client = new BusClient(LinkFactory.Open(transport), TimeProvider.System, new BusClientOptions { ResponseMargin = TimeSpan.FromMilliseconds(50) }))
+        {
+            _ = client.Write(FactoryId, ControlTable.Firmware["id"].At(0), [11]); // it answers from id 11 at once
+            Assert.True(client.Write(11, ControlTable.Firmware["kp"].At(1), [7, 0]).Succeeded);
+        }
+
+        sim.Type("power-cycle 11");
+        sim.WaitFor("power-cycled module 11 (left shoulder): it answers at id 11", Patience);
+        Assert.Equal(new[] { 2, 3 }, Modules("lb-0006"));
+
+        using var second = Commission(transport, "lb-0006");
+        second.WaitFor("module 3 of 6 (left shoulder, id 11): answers at its ID already (a commissioning stopped halfway): writing its parameters again", Patience);
+        ConnectAsAsked(sim, second, 4, 6);
+        Assert.Equal(0, second.WaitForExit(Patience));
+        Assert.Contains("module 2 of 6 (right forearm, id 3): done", second.Output, StringComparison.Ordinal);
+        var discover = Cli.Run("discover", transport, "--robot", Robot, "--unit", "lb-0006", "--units", _units, "--margin-ms", "50");
+        Assert.True(discover.Code == 0, discover.Output + discover.Error);
+        var kp = JsonNode.Parse(File.ReadAllText(Path.Combine(_units, "lb-0006.json")))!["modules"]!.AsArray().Single(m => (int)m!["id"]! == 11)!["parameters"]!["kp[1]"]!;
+        Assert.NotEqual(7, (int)kp);
+    }
+
+    [Fact]
     public void A_module_that_refuses_a_write_stops_commissioning_with_one_line_naming_it_and_what_to_do()
     {
         using var sim = StartSim(out var transport);
