@@ -35,7 +35,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     private readonly WireFaultInjector _wire;
     private readonly long _physicsStepUs;
     private double _byteUs;
-    private readonly List<ModuleEvent> _moduleEvents = []; // module resets and broken transmit lines, by time
+    private readonly ModuleEvents _moduleEvents = new();
     private readonly byte[] _scratch = new byte[4096];
     private const long MaxRealTimeLagUs = 20_000;
     private readonly VirtualRobotOptions _options;
@@ -160,9 +160,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 
     /// <summary>Resets module <paramref name="moduleId"/> (cause: brown-out, as cautery EMI does) at <paramref name="at"/> after construction.</summary>
     public void ScheduleReset(byte moduleId, TimeSpan at, byte cause = FirmwareHost.ResetBrownOut)
-    {
-        Schedule(new ModuleEvent((long)at.TotalMicroseconds, _plugs.IndexOf(moduleId), cause));
-    }
+        => _moduleEvents.Reset((long)at.TotalMicroseconds, _plugs.IndexOf(moduleId), cause);
 
     /// <summary>Switches module <paramref name="moduleId"/> off and on (RAM lost, FRAM kept).</summary>
     /// <exception cref="InvalidOperationException">The module is not plugged in (<see cref="VirtualRobotOptions.Factory"/>).</exception>
@@ -213,7 +211,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     /// <c>--inject silent=</c>.
     /// </summary>
     public void ScheduleTransmitBreak(byte moduleId, TimeSpan at) =>
-        Schedule(new ModuleEvent((long)at.TotalMicroseconds, _plugs.IndexOf(moduleId), 0, BreaksLine: true));
+        _moduleEvents.BreakLine((long)at.TotalMicroseconds, _plugs.IndexOf(moduleId));
 
     /// <summary>
     /// Writes <paramref name="data"/> into module <paramref name="moduleId"/>'s control table at
@@ -308,9 +306,9 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         while (_nowUs < targetUs)
         {
             var next = Math.Min(targetUs, _physicsUs + _physicsStepUs);
-            if (_moduleEvents.Count > 0 && _moduleEvents[0].AtUs < next)
+            if (_moduleEvents.NextUs < next)
             {
-                next = Math.Max(_nowUs, _moduleEvents[0].AtUs);
+                next = Math.Max(_nowUs, _moduleEvents.NextUs);
             }
 
             if (next > _nowUs)
@@ -325,25 +323,9 @@ public sealed unsafe partial class VirtualRobot : IDisposable
                 _physicsUs = _nowUs;
             }
 
-            while (_moduleEvents.Count > 0 && _moduleEvents[0].AtUs <= _nowUs)
-            {
-                var e = _moduleEvents[0];
-                FirmwareHost.Check(
-                    e.BreaksLine ? FirmwareHost.SetTransmitBroken(_bus, e.Module, 1) : FirmwareHost.Reset(_bus, e.Module, e.Cause),
-                    e.BreaksLine ? "rcfw_set_tx_broken" : "rcfw_reset");
-                _moduleEvents.RemoveAt(0);
-            }
+            _moduleEvents.FireDue(_bus, _nowUs);
         }
 
         _clock.SetTimestamp(_clockOrigin + (_nowUs * 10));
     }
-
-    private void Schedule(ModuleEvent e)
-    {
-        _moduleEvents.Add(e);
-        _moduleEvents.Sort((a, b) => a.AtUs.CompareTo(b.AtUs));
-    }
-
-    /// <summary>A module event at a simulated time: a reset with its cause, or its transmit line breaking.</summary>
-    private readonly record struct ModuleEvent(long AtUs, int Module, byte Cause, bool BreaksLine = false);
 }
