@@ -176,6 +176,23 @@ public sealed partial class CommissionTests : IDisposable
     }
 
     [Fact]
+    public void Interactively_each_module_is_asked_for_and_looked_for_when_the_operator_presses_Enter()
+    {
+        using var sim = StartSim(out var transport);
+        using var commission = new RunProcess(typing: true, "commission", Robot, "--transport", transport, "--unit", "lb-0007", "--units", _units, "--margin-ms", "50");
+        commission.WaitFor("connect module 1 of 6 (right upper arm, id 2), then press Enter", Patience);
+        commission.Type(string.Empty); // Enter with nothing plugged in
+        commission.WaitFor($"no module answers at id {FactoryId}: check that module 1 of 6 (right upper arm, id 2) is plugged in and powered, then press Enter", Patience);
+        sim.Type("connect 2");
+        sim.WaitFor("connected module 2 ", Patience);
+        commission.Type(string.Empty);
+        commission.WaitFor("connect module 2 of 6 (right forearm, id 3), then press Enter", Patience);
+        Assert.Equal(new[] { 2 }, Modules("lb-0007"));
+        commission.Signal("INT");
+        Assert.NotEqual(0, commission.WaitForExit(Patience));
+    }
+
+    [Fact]
     public void Bad_input_is_one_line_and_exit_2()
     {
         var missing = Cli.Run("commission", Path.Combine(_units, "none.json"), "--transport", "serial:/dev/null", "--unit", "u", "--units", _units);
