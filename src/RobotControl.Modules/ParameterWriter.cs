@@ -165,9 +165,16 @@ public sealed class ParameterWriter
         var reply = _client.Write(id, field.At(motor), bytes[..field.Size]);
         if (!reply.Succeeded)
         {
-            var locked = field.Persistent && StatusErrors.Number(reply.Error) == StatusError.Access ? ": the persistent area is locked while torque is on, turn torque off first" : string.Empty;
-            throw new IOException(string.Create(CultureInfo.InvariantCulture, $"module {id}: writing {Name(field, motor)} = {value} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)}){locked}"));
+            throw new IOException(Failed(id, field, motor, value, reply));
         }
+    }
+
+    /// <summary>The line for a write of <paramref name="value"/> into <paramref name="field"/>[<paramref name="motor"/>] of module <paramref name="id"/> that <paramref name="reply"/> says failed, with what to do when the module locked it.</summary>
+    public static string Failed(byte id, ControlTableField field, int motor, long value, Reply reply)
+    {
+        ArgumentNullException.ThrowIfNull(field);
+        var locked = field.Persistent && StatusErrors.Number(reply.Error) == StatusError.Access ? ": the persistent area is locked while torque is on, turn torque off first" : string.Empty;
+        return string.Create(CultureInfo.InvariantCulture, $"module {id}: writing {Name(field, motor)} = {value} failed ({reply.Outcome}, {StatusErrors.Describe(reply.Error)}){locked}");
     }
 
     /// <summary>Module <paramref name="id"/>'s persistent area; <paramref name="then"/> says, on failure, what became of the values.</summary>

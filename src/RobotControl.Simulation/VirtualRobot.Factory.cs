@@ -1,4 +1,3 @@
-using System.Collections.Concurrent;
 using RobotControl.Bus.Protocol;
 using RobotControl.Simulation.Native;
 
@@ -11,9 +10,6 @@ namespace RobotControl.Simulation;
 /// </summary>
 public sealed partial class VirtualRobot
 {
-    private readonly bool[] _connected;
-    private readonly ConcurrentQueue<Action<VirtualRobot>> _posted = new();
-
     /// <summary>The ID a module fresh from the factory answers at (the control table's default <c>id</c>).</summary>
     public static byte FactoryId => (byte)ControlTable.Firmware["id"].Default;
 
@@ -22,12 +18,12 @@ public sealed partial class VirtualRobot
 
     /// <summary>True when the module the robot file numbers <paramref name="moduleId"/> is plugged in.</summary>
     /// <exception cref="KeyNotFoundException">The robot file has no such module.</exception>
-    public bool IsConnected(byte moduleId) => _connected[ModuleIndex(moduleId)];
+    public bool IsConnected(byte moduleId) => _plugs.IsConnected(_plugs.IndexOf(moduleId));
 
     /// <summary>Plugs in the next module still in the box (robot file order); returns its robot-file ID, or null when all are in.</summary>
     public byte? ConnectNext()
     {
-        var next = Array.IndexOf(_connected, false);
+        var next = _plugs.NextInBox;
         if (next < 0)
         {
             return null;
@@ -41,12 +37,12 @@ public sealed partial class VirtualRobot
     /// <exception cref="KeyNotFoundException">The robot file has no such module.</exception>
     public void Connect(byte moduleId)
     {
-        var index = ModuleIndex(moduleId);
-        if (!_connected[index])
+        var index = _plugs.IndexOf(moduleId);
+        if (!_plugs.IsConnected(index))
         {
-            FeedSensors();
+            _axes.Feed(_bus);
             FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, index), "rcfw_power_cycle");
-            _connected[index] = true;
+            _plugs.Set(index, connected: true);
         }
     }
 
@@ -54,16 +50,16 @@ public sealed partial class VirtualRobot
     /// <exception cref="KeyNotFoundException">The robot file has no such module.</exception>
     public void Disconnect(byte moduleId)
     {
-        var index = ModuleIndex(moduleId);
+        var index = _plugs.IndexOf(moduleId);
         FirmwareHost.Check(FirmwareHost.PowerOff(_bus, index), "rcfw_power_off");
-        _connected[index] = false;
+        _plugs.Set(index, connected: false);
     }
 
     /// <summary>The ID module <paramref name="moduleId"/> (the robot file's) answers at now, read from its table (not over the bus).</summary>
     /// <exception cref="InvalidOperationException">The module is not plugged in.</exception>
     public byte BusId(byte moduleId)
     {
-        _ = ConnectedIndex(moduleId, "read the ID of");
+        _ = _plugs.ConnectedIndex(moduleId, "read the ID of");
         Span<byte> id = stackalloc byte[1];
         PeekTable(moduleId, (ushort)ControlTable.Firmware["id"].At(0), id);
         return id[0];
@@ -76,22 +72,8 @@ public sealed partial class VirtualRobot
     public void Post(Action<VirtualRobot> change)
     {
         ArgumentNullException.ThrowIfNull(change);
-        _posted.Enqueue(change);
+        _plugs.Post(change);
     }
 
-    private void RunPosted()
-    {
-        while (_posted.TryDequeue(out var change))
-        {
-            change(this);
-        }
-    }
-
-    private int ConnectedIndex(byte moduleId, string action)
-    {
-        var index = ModuleIndex(moduleId);
-        return _connected[index]
-            ? index
-            : throw new InvalidOperationException($"cannot {action} module {moduleId} ({_modules[index].Name}): it is not plugged in (connect it first)");
-    }
+    private void RunPosted() => _plugs.RunPosted(this);
 }

@@ -1,4 +1,3 @@
-using System.Runtime;
 using System.Runtime.CompilerServices;
 using RobotControl.Bus.Transports;
 using RobotControl.Bus.Transports.Serial;
@@ -26,23 +25,10 @@ public sealed unsafe partial class VirtualRobot
         var start = System.Diagnostics.Stopwatch.GetTimestamp();
         var origin = _nowUs;
         var pty = port as PseudoTerminal;
-        var last = start;
-        var lastCpu = Environment.CpuUsage.TotalTime;
-        var afterFirstTurn = false;
-        var compiledMethods = 0L;
-        var compileTime = TimeSpan.Zero;
+        Serving.Start(start);
         while (!cancellationToken.IsCancellationRequested)
         {
-            var now = System.Diagnostics.Stopwatch.GetTimestamp();
-            var cpu = Environment.CpuUsage.TotalTime;
-            if (now - last > LongestServeGap.Ticks * System.Diagnostics.Stopwatch.Frequency / TimeSpan.TicksPerSecond)
-            {
-                LongestServeGap = System.Diagnostics.Stopwatch.GetElapsedTime(last, now);
-                LongestServeGapAt = System.Diagnostics.Stopwatch.GetElapsedTime(start, last);
-                LongestServeGapCpu = cpu - lastCpu;
-            }
-
-            (last, lastCpu) = (now, cpu);
+            Serving.Turn(System.Diagnostics.Stopwatch.GetTimestamp());
             RunPosted(); // modules plugged in or power-cycled from another thread
             if (pty is not null)
             {
@@ -66,7 +52,7 @@ public sealed unsafe partial class VirtualRobot
             if (wall - _nowUs > MaxRealTimeLagUs)
             {
                 origin -= wall - _nowUs - MaxRealTimeLagUs;
-                SlippedTime += TimeSpan.FromTicks((wall - _nowUs - MaxRealTimeLagUs) * 10);
+                Serving.SlippedTime += TimeSpan.FromTicks((wall - _nowUs - MaxRealTimeLagUs) * 10);
                 wall = _nowUs + MaxRealTimeLagUs;
             }
 
@@ -80,23 +66,17 @@ public sealed unsafe partial class VirtualRobot
                 }
             }
             while (_nowUs < wall && !cancellationToken.IsCancellationRequested);
-            if (!afterFirstTurn)
-            {
-                afterFirstTurn = true;
-                compiledMethods = JitInfo.GetCompiledMethodCount(currentThread: true);
-                compileTime = JitInfo.GetCompilationTime(currentThread: true);
-            }
+            Serving.FirstTurnDone();
         }
 
-        if (afterFirstTurn)
-        {
-            MethodsCompiledWhileServing = JitInfo.GetCompiledMethodCount(currentThread: true) - compiledMethods;
-            CompileTimeWhileServing = JitInfo.GetCompilationTime(currentThread: true) - compileTime;
-        }
+        Serving.Stop();
     }
 
     /// <summary>The baud the simulated line runs at now (it follows the client's pty setting when served on a pty).</summary>
     public int LineBaud => (int)Math.Round(10e6 / _byteUs);
+
+    /// <summary>Moves the simulated line (every module and the host's end) to <paramref name="baud"/>.</summary>
+    internal void SetLineBaud(int baud) => FollowLineBaud(baud);
 
     private void FollowLineBaud(int baud)
     {
@@ -107,24 +87,6 @@ public sealed unsafe partial class VirtualRobot
         }
     }
 
-    /// <summary>Wall-clock time the real-time simulation (<see cref="Serve"/>) fell behind and skipped.</summary>
-    public TimeSpan SlippedTime { get; private set; }
-
-    /// <summary>
-    /// The longest wall-clock time between two turns of <see cref="Serve"/>'s loop (a turn waits up to 200 us for bytes,
-    /// then simulates up to now): longer than about 1 ms, the simulator was not running (preempted, paused, stalled).
-    /// </summary>
-    public TimeSpan LongestServeGap { get; private set; }
-
-    /// <summary>When the <see cref="LongestServeGap"/> began, wall-clock time after serving started.</summary>
-    public TimeSpan LongestServeGapAt { get; private set; }
-
-    /// <summary>CPU time the process used during the <see cref="LongestServeGap"/>: about the gap, it was busy; about 0, it was not running.</summary>
-    public TimeSpan LongestServeGapCpu { get; private set; }
-
-    /// <summary>Methods the JIT compiled on the serving thread after its first turn of <see cref="Serve"/>; known once it has returned.</summary>
-    public long MethodsCompiledWhileServing { get; private set; }
-
-    /// <summary>Time the serving thread spent in the JIT after its first turn (see <see cref="MethodsCompiledWhileServing"/>).</summary>
-    public TimeSpan CompileTimeWhileServing { get; private set; }
+    /// <summary>How <see cref="Serve"/> kept up with the wall clock.</summary>
+    public ServeStatistics Serving { get; } = new();
 }

@@ -29,13 +29,13 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 {
     private readonly ManualTimeProvider _clock;
     private readonly long _clockOrigin;
-    private readonly VirtualAxis[] _axes;
+    private readonly VirtualAxes _axes;
+    private readonly ModulePlugs _plugs;
     private readonly ModuleDefinition[] _modules;
-    private readonly NoiseSource _sensorNoise;
-    private readonly NoiseSource _wireNoise;
+    private readonly WireFaultInjector _wire;
     private readonly long _physicsStepUs;
     private double _byteUs;
-    private readonly List<ModuleEvent> _moduleEvents = []; // module resets and broken transmit lines, by time
+    private readonly ModuleEvents _moduleEvents = new();
     private readonly byte[] _scratch = new byte[4096];
     private const long MaxRealTimeLagUs = 20_000;
     private readonly VirtualRobotOptions _options;
@@ -63,8 +63,8 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         _options.CheckFactory(_modules.Length);
         BaudRate = _options.Factory ? FactoryBaud : _options.BaudRate ?? robot.Modules.BaudRate;
         _physicsStepUs = Math.Max(1, (long)_options.PhysicsStep.TotalMicroseconds);
-        _sensorNoise = new NoiseSource(_options.Seed);
-        _wireNoise = new NoiseSource(_options.Seed * 7919);
+        _wire = new WireFaultInjector(_options.Seed * 7919);
+        _plugs = new ModulePlugs(_modules, _options);
 
         var ids = _modules.Select(m => m.Id).ToArray();
         var motorCounts = _modules.Select(m => (byte)Math.Max(1, m.Motors.Count == 0 ? 1 : m.Motors.Max(x => x.Channel) + 1)).ToArray();
@@ -82,44 +82,22 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         // Modules leave the factory at the control table's default baud; commissioning moves them to BaudRate.
         FirmwareHost.Check(FirmwareHost.BusSetBaud(_bus, (uint)FactoryBaud), "rcfw_bus_set_baud");
         _byteUs = 10e6 / FactoryBaud;
-        var axes = new List<VirtualAxis>();
-        var variations = _options.UnitVariationSeed is { } unit
-            ? PotVariation.Draw(unit, _modules.Sum(m => m.Motors.Count), PotVariationBounds.Default)
-            : null;
-        for (var mi = 0; mi < _modules.Length; mi++)
+        _axes = new VirtualAxes(robot, _modules, _options);
+        foreach (var axis in _axes.All)
         {
-            foreach (var motor in _modules[mi].Motors)
-            {
-                var config = new MotorConfig(robot, _modules[mi], motor);
-                var actuator = config.Actuator;
-                var model = new DrivetrainModel(actuator, robot.Motor(actuator.Drivetrain.MotorModel), _options.BacklashDeg * Math.PI / 180, LinkInertia(actuator))
-                {
-                    HardStops = (config.OutputMinRad - 0.05, config.OutputMaxRad + 0.05),
-                };
-                model.Reset(InitialOutput(robot, config));
-                axes.Add(new VirtualAxis(config, mi, model, variations?[axes.Count] ?? PotVariation.None));
-            }
-        }
-
-        _axes = axes.ToArray();
-        foreach (var axis in _axes)
-        {
-            axis.LastSector = Sector(axis);
-            _ = FirmwareHost.SetHall(_bus, axis.ModuleIndex, axis.Config.Channel, HallSensors.Code(axis.Model.RotorAngle, axis.Motor.PolePairs));
+            VirtualAxes.SetHall(_bus, axis);
         }
 
         // Power-on state: sensors valid before the firmware's first ticks.
-        FeedSensors();
+        _axes.Feed(_bus);
         for (var mi = 0; mi < _modules.Length; mi++)
         {
             FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, mi), "rcfw_power_cycle");
         }
 
-        _connected = new bool[_modules.Length];
         for (var mi = 0; mi < _modules.Length; mi++)
         {
-            _connected[mi] = !_options.Factory || mi < _options.ConnectedAtStart;
-            if (!_connected[mi])
+            if (!_plugs.IsConnected(mi))
             {
                 FirmwareHost.Check(FirmwareHost.PowerOff(_bus, mi), "rcfw_power_off"); // still in the box
             }
@@ -127,7 +105,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 
         if (_options.Commissioned && !_options.Factory)
         {
-            Commission();
+            VirtualCommissioning.Run(this);
         }
     }
 
@@ -144,16 +122,20 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     public static int FactoryBaud => ModuleParameters.BaudFromCode((int)ControlTable.Firmware["baud_rate"].Default);
 
     /// <summary>Every simulated motor, modules in file order, motors in file order.</summary>
-    public IReadOnlyList<VirtualAxis> Axes => _axes;
+    public IReadOnlyList<VirtualAxis> Axes => _axes.All;
 
     /// <summary>Faults on the wire (host and modules alike).</summary>
-    public WireFaults WireFaults { get; set; } = WireFaults.None;
+    public WireFaults WireFaults
+    {
+        get => _wire.Faults;
+        set => _wire.Faults = value;
+    }
 
     /// <summary>Bytes the wire faults corrupted.</summary>
-    public long CorruptedBytes { get; private set; }
+    public long CorruptedBytes => _wire.CorruptedBytes;
 
     /// <summary>Bytes the wire faults dropped.</summary>
-    public long DroppedBytes { get; private set; }
+    public long DroppedBytes => _wire.DroppedBytes;
 
     /// <summary>Bytes the host sent and received (for wire utilisation).</summary>
     public long WireBytes { get; private set; }
@@ -167,7 +149,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     /// <summary>The axis that drives <paramref name="actuator"/> of arm <paramref name="arm"/>.</summary>
     /// <exception cref="KeyNotFoundException">No module drives it.</exception>
     public VirtualAxis Axis(int arm, string actuator) =>
-        _axes.FirstOrDefault(a => a.Config.Arm == arm && a.Config.Actuator.Name == actuator)
+        _axes.All.FirstOrDefault(a => a.Config.Arm == arm && a.Config.Actuator.Name == actuator)
         ?? throw new KeyNotFoundException($"no module drives actuator '{actuator}' of arm {arm}");
 
     /// <summary>The host's end of the bus. Reads run the simulation forward on its clock.</summary>
@@ -178,13 +160,11 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 
     /// <summary>Resets module <paramref name="moduleId"/> (cause: brown-out, as cautery EMI does) at <paramref name="at"/> after construction.</summary>
     public void ScheduleReset(byte moduleId, TimeSpan at, byte cause = FirmwareHost.ResetBrownOut)
-    {
-        Schedule(new ModuleEvent((long)at.TotalMicroseconds, ModuleIndex(moduleId), cause));
-    }
+        => _moduleEvents.Reset((long)at.TotalMicroseconds, _plugs.IndexOf(moduleId), cause);
 
     /// <summary>Switches module <paramref name="moduleId"/> off and on (RAM lost, FRAM kept).</summary>
     /// <exception cref="InvalidOperationException">The module is not plugged in (<see cref="VirtualRobotOptions.Factory"/>).</exception>
-    public void PowerCycle(byte moduleId) => FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, ConnectedIndex(moduleId, "power-cycle")), "rcfw_power_cycle");
+    public void PowerCycle(byte moduleId) => FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, _plugs.ConnectedIndex(moduleId, "power-cycle")), "rcfw_power_cycle");
 
     /// <summary>
     /// Switches <paramref name="axis"/>'s module off, turns the axis by hand to <paramref name="outputRad"/> (its
@@ -195,7 +175,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     public void TurnWhileOff(VirtualAxis axis, double outputRad)
     {
         ArgumentNullException.ThrowIfNull(axis);
-        if (Array.IndexOf(_axes, axis) < 0)
+        if (Array.IndexOf(_axes.All, axis) < 0)
         {
             throw new ArgumentException($"axis {axis.Config.FullName} is not part of this virtual robot", nameof(axis));
         }
@@ -205,13 +185,13 @@ public sealed unsafe partial class VirtualRobot : IDisposable
             throw new ArgumentException($"the angle to turn {axis.Config.FullName} to must be finite", nameof(outputRad));
         }
 
-        _ = ConnectedIndex(axis.Config.ModuleId, "turn while off");
+        _ = _plugs.ConnectedIndex(axis.Config.ModuleId, "turn while off");
         axis.Model.Reset(outputRad);
-        axis.LastSector = Sector(axis);
+        axis.LastSector = VirtualAxes.Sector(axis);
         // The Hall edge this causes reaches firmware that is about to lose its RAM: the power cycle restarts it from
         // FRAM (saved no later than the last simulated millisecond), reading the sensors as they are now.
-        _ = FirmwareHost.SetHall(_bus, axis.ModuleIndex, axis.Config.Channel, HallSensors.Code(axis.Model.RotorAngle, axis.Motor.PolePairs));
-        FeedSensors();
+        VirtualAxes.SetHall(_bus, axis);
+        _axes.Feed(_bus);
         FirmwareHost.Check(FirmwareHost.PowerCycle(_bus, axis.ModuleIndex), "rcfw_power_cycle");
     }
 
@@ -220,7 +200,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     {
         fixed (byte* p = destination)
         {
-            FirmwareHost.Check(FirmwareHost.PeekTable(_bus, ModuleIndex(moduleId), address, p, destination.Length), "rcfw_peek_table");
+            FirmwareHost.Check(FirmwareHost.PeekTable(_bus, _plugs.IndexOf(moduleId), address, p, destination.Length), "rcfw_peek_table");
         }
     }
 
@@ -231,7 +211,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     /// <c>--inject silent=</c>.
     /// </summary>
     public void ScheduleTransmitBreak(byte moduleId, TimeSpan at) =>
-        Schedule(new ModuleEvent((long)at.TotalMicroseconds, ModuleIndex(moduleId), 0, BreaksLine: true));
+        _moduleEvents.BreakLine((long)at.TotalMicroseconds, _plugs.IndexOf(moduleId));
 
     /// <summary>
     /// Writes <paramref name="data"/> into module <paramref name="moduleId"/>'s control table at
@@ -242,7 +222,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
     {
         fixed (byte* p = data)
         {
-            return FirmwareHost.Check(FirmwareHost.TableWrite(_bus, ModuleIndex(moduleId), address, p, data.Length), "rcfw_table_write");
+            return FirmwareHost.Check(FirmwareHost.TableWrite(_bus, _plugs.IndexOf(moduleId), address, p, data.Length), "rcfw_table_write");
         }
     }
 
@@ -264,7 +244,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
             AdvanceTo(_hostFreeUs); // the previous frame is still leaving the host's UART
         }
 
-        var n = ApplyFaults(data, _scratch);
+        var n = _wire.Apply(data, _scratch);
         WireBytes += data.Length;
         fixed (byte* p = _scratch)
         {
@@ -309,7 +289,7 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         }
 
         WireBytes += n;
-        return ApplyFaults(_scratch.AsSpan(0, n), destination);
+        return _wire.Apply(_scratch.AsSpan(0, n), destination);
     }
 
     private void CatchUpWithClock()
@@ -326,9 +306,9 @@ public sealed unsafe partial class VirtualRobot : IDisposable
         while (_nowUs < targetUs)
         {
             var next = Math.Min(targetUs, _physicsUs + _physicsStepUs);
-            if (_moduleEvents.Count > 0 && _moduleEvents[0].AtUs < next)
+            if (_moduleEvents.NextUs < next)
             {
-                next = Math.Max(_nowUs, _moduleEvents[0].AtUs);
+                next = Math.Max(_nowUs, _moduleEvents.NextUs);
             }
 
             if (next > _nowUs)
@@ -339,141 +319,13 @@ public sealed unsafe partial class VirtualRobot : IDisposable
 
             if (_nowUs >= _physicsUs + _physicsStepUs)
             {
-                StepPhysics((_nowUs - _physicsUs) * 1e-6);
+                _axes.Step(_bus, (_nowUs - _physicsUs) * 1e-6);
                 _physicsUs = _nowUs;
             }
 
-            while (_moduleEvents.Count > 0 && _moduleEvents[0].AtUs <= _nowUs)
-            {
-                var e = _moduleEvents[0];
-                FirmwareHost.Check(
-                    e.BreaksLine ? FirmwareHost.SetTransmitBroken(_bus, e.Module, 1) : FirmwareHost.Reset(_bus, e.Module, e.Cause),
-                    e.BreaksLine ? "rcfw_set_tx_broken" : "rcfw_reset");
-                _moduleEvents.RemoveAt(0);
-            }
+            _moduleEvents.FireDue(_bus, _nowUs);
         }
 
         _clock.SetTimestamp(_clockOrigin + (_nowUs * 10));
     }
-
-    private void StepPhysics(double dt)
-    {
-        foreach (var axis in _axes)
-        {
-            var pwm = FirmwareHost.GetPwm(_bus, axis.ModuleIndex, axis.Config.Channel);
-            var enabled = FirmwareHost.GetDriverEnable(_bus, axis.ModuleIndex, axis.Config.Channel) == 1;
-            axis.Pwm = pwm;
-            axis.DriverEnabled = enabled;
-            axis.Model.Step(pwm / 255.0, enabled, dt);
-
-            // Hall edges in order, as the pin interrupts would see them, however far the rotor turned.
-            var sector = Sector(axis);
-            var direction = Math.Sign(sector - axis.LastSector);
-            var guard = 0;
-            while (axis.LastSector != sector && guard++ < 64)
-            {
-                axis.LastSector += direction;
-                var code = HallSensors.Code(((axis.LastSector + 0.5) * Math.PI / 3) / axis.Motor.PolePairs, axis.Motor.PolePairs);
-                _ = FirmwareHost.SetHall(_bus, axis.ModuleIndex, axis.Config.Channel, code);
-            }
-
-            axis.LastSector = sector;
-        }
-
-        FeedSensors();
-    }
-
-    private void FeedSensors()
-    {
-        foreach (var axis in _axes)
-        {
-            var current = (Math.Abs(axis.Model.Current) + axis.CurrentSenseOffsetA) * axis.Config.RawPerAmp + _sensorNoise.Gaussian(_options.CurrentNoiseCounts);
-            _ = FirmwareHost.SetCurrentRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(current), 0, 4095));
-            var noise = _sensorNoise.Gaussian(_options.PotNoiseCounts);
-            var pot = axis.PotFailedRaw ?? (axis.TruePot.Reading(axis.Model.OutputAngle) + noise);
-            _ = FirmwareHost.SetPotRaw(_bus, axis.ModuleIndex, axis.Config.Channel, (ushort)Math.Clamp(Math.Round(pot), 0, 4095));
-        }
-    }
-
-    private int ApplyFaults(ReadOnlySpan<byte> source, Span<byte> destination)
-    {
-        var faults = WireFaults;
-        if (faults.BitErrorRate <= 0 && faults.ByteDropRate <= 0)
-        {
-            source.CopyTo(destination);
-            return source.Length;
-        }
-
-        var n = 0;
-        foreach (var b in source)
-        {
-            if (faults.ByteDropRate > 0 && _wireNoise.Uniform() < faults.ByteDropRate)
-            {
-                DroppedBytes++;
-                continue;
-            }
-
-            var value = b;
-            for (var bit = 0; bit < 8 && faults.BitErrorRate > 0; bit++)
-            {
-                if (_wireNoise.Uniform() < faults.BitErrorRate)
-                {
-                    value ^= (byte)(1 << bit);
-                }
-            }
-
-            if (value != b)
-            {
-                CorruptedBytes++;
-            }
-
-            destination[n++] = value;
-        }
-
-        return n;
-    }
-
-    private int ModuleIndex(byte id)
-    {
-        for (var i = 0; i < _modules.Length; i++)
-        {
-            if (_modules[i].Id == id)
-            {
-                return i;
-            }
-        }
-
-        throw new KeyNotFoundException($"the robot has no module with ID {id}");
-    }
-
-    private static int Sector(VirtualAxis axis) => (int)Math.Floor(axis.Model.RotorAngle * axis.Motor.PolePairs / (Math.PI / 3));
-
-    private double InitialOutput(RobotDefinition robot, MotorConfig config)
-    {
-        if (!config.Actuator.IsKinematic)
-        {
-            return _options.InitialJawRad ?? (0.5 * (robot.Tool.JawMinRad + robot.Tool.JawMaxRad));
-        }
-
-        var q = _options.InitialJointsRad is { } given && config.Arm < given.Count ? given[config.Arm] : robot.Joints.Select(j => j.MidRad).ToArray();
-        var a = 0.0;
-        for (var j = 0; j < robot.JointCount; j++)
-        {
-            a += config.Actuator.Coupling[j] * q[j];
-        }
-
-        return a;
-    }
-
-    // A link's inertia at the axis output, kg m^2: a few grams at a few centimetres (no mass data in the design).
-    private static double LinkInertia(ActuatorDefinition actuator) => actuator.IsKinematic ? 2e-5 : 1e-7;
-
-    private void Schedule(ModuleEvent e)
-    {
-        _moduleEvents.Add(e);
-        _moduleEvents.Sort((a, b) => a.AtUs.CompareTo(b.AtUs));
-    }
-
-    /// <summary>A module event at a simulated time: a reset with its cause, or its transmit line breaking.</summary>
-    private readonly record struct ModuleEvent(long AtUs, int Module, byte Cause, bool BreaksLine = false);
 }

@@ -87,6 +87,9 @@ public sealed partial class BusClient : IDisposable
     /// <summary>Frames dropped by the decoder because of a bad CRC (all modules).</summary>
     public long CrcErrors => _decoder.CrcErrors;
 
+    /// <summary>Bytes received that were part of no frame (noise, or two modules answering at once).</summary>
+    public long DiscardedBytes => _decoder.DiscardedBytes;
+
     /// <summary>Valid frames that are not status replies (nobody asked for them).</summary>
     public long StrayFrames => _strayFrames;
 

@@ -131,7 +131,7 @@ internal sealed class BusSimCommand : ICliCommand
 
                 output.WriteLine(string.Create(
                     CultureInfo.InvariantCulture,
-                    $"stopped after {sim.Elapsed.TotalSeconds:F1} s simulated: {sim.SlippedTime.TotalMilliseconds:F0} ms slipped behind real time, longest stall {sim.LongestServeGap.TotalMilliseconds:F1} ms at {sim.LongestServeGapAt.TotalSeconds:F3} s (process CPU in it {sim.LongestServeGapCpu.TotalMilliseconds:F1} ms), compiled while serving {sim.MethodsCompiledWhileServing} methods ({sim.CompileTimeWhileServing.TotalMilliseconds:F1} ms), {GC.CollectionCount(0)} collections ({GC.GetTotalPauseDuration().TotalMilliseconds:F1} ms paused)"));
+                    $"stopped after {sim.Elapsed.TotalSeconds:F1} s simulated: {sim.Serving.SlippedTime.TotalMilliseconds:F0} ms slipped behind real time, longest stall {sim.Serving.LongestServeGap.TotalMilliseconds:F1} ms at {sim.Serving.LongestServeGapAt.TotalSeconds:F3} s (process CPU in it {sim.Serving.LongestServeGapCpu.TotalMilliseconds:F1} ms), compiled while serving {sim.Serving.MethodsCompiledWhileServing} methods ({sim.Serving.CompileTimeWhileServing.TotalMilliseconds:F1} ms), {GC.CollectionCount(0)} collections ({GC.GetTotalPauseDuration().TotalMilliseconds:F1} ms paused)"));
                 return 0;
             }
             catch (Exception ex) when (ex is IOException or RobotDataException or ArgumentException)

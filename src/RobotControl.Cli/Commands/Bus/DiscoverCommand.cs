@@ -1,4 +1,5 @@
 using System.CommandLine;
+using RobotControl.Cli.Commands.Commission;
 
 namespace RobotControl.Cli.Commands.Bus;
 
@@ -19,8 +20,12 @@ internal sealed class DiscoverCommand : ICliCommand
         command.Options.Add(clearFaults);
         var scanBauds = new Option<bool>("--scan-bauds") { Description = "Look for modules at every baud the control table supports; with --robot, offer to bring strays back to the file's baud" };
         var yes = new Option<bool>("--yes") { Description = "With --scan-bauds: bring the robot's modules found at another baud back to the robot file's baud" };
+        var unit = new Option<string?>("--unit") { Description = "With a robot file: also compare every module with this unit's file (ID, firmware version, the parameters commissioning wrote)" };
+        var units = new Option<DirectoryInfo?>("--units") { Description = $"Directory of unit files (default {CommissionCommand.DefaultUnitsDirectory})" };
         command.Options.Add(scanBauds);
         command.Options.Add(yes);
+        command.Options.Add(unit);
+        command.Options.Add(units);
         command.SetAction(parse =>
         {
             var output = parse.InvocationConfiguration.Output;
@@ -61,6 +66,23 @@ internal sealed class DiscoverCommand : ICliCommand
                 foreach (var m in mismatches)
                 {
                     output.WriteLine($"PARAM    {m}");
+                }
+
+                if (parse.GetValue(unit) is { } name)
+                {
+                    var path = UnitFile.PathOf(parse.GetValue(units)?.FullName ?? CommissionCommand.DefaultUnitsDirectory, name);
+                    var recorded = UnitFile.Load(path) ?? throw new ArgumentException($"--unit {name}: no unit file {path} (robotctl commission writes it)");
+                    var differences = UnitCheck.Differences(session.Client, recorded);
+                    foreach (var d in differences)
+                    {
+                        output.WriteLine($"UNIT     {d}");
+                    }
+
+                    output.WriteLine(differences.Count == 0 ? $"unit {name}: {recorded.Modules.Count} modules as commissioned" : $"unit {name}: {differences.Count} differences from {path}");
+                    if (differences.Count > 0)
+                    {
+                        return 1;
+                    }
                 }
 
                 output.WriteLine(report.AllAsConfigured && mismatches.Count == 0

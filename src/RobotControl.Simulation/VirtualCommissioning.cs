@@ -1,22 +1,21 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Modules;
-using RobotControl.Simulation.Bus;
-using RobotControl.Simulation.Native;
 
 namespace RobotControl.Simulation;
 
-/// <summary>Commissioning: a new virtual robot's modules get the robot file's parameters, are homed from their pots and moved to the bus baud.</summary>
-public sealed partial class VirtualRobot
+/// <summary>Commissioning a new (not factory) <see cref="VirtualRobot"/>: its modules get the robot file's parameters over the bus, are homed from their pots and moved to the bus baud.</summary>
+internal static class VirtualCommissioning
 {
-    private void Commission()
+    public static void Run(VirtualRobot robot)
     {
         var table = ControlTable.Firmware;
-        using var client = new BusClient(new VirtualLink(this), _clock);
+        var modules = robot.Definition.Modules.Modules;
+        using var client = new BusClient(robot.OpenLink(), robot.Clock);
         Span<byte> value = stackalloc byte[4];
-        foreach (var module in _modules)
+        foreach (var module in modules)
         {
-            foreach (var p in ModuleParameters.For(Definition, module, table).Where(p => p.Field.Name != "baud_rate"))
+            foreach (var p in ModuleParameters.For(robot.Definition, module, table).Where(p => p.Field.Name != "baud_rate"))
             {
                 p.Field.Encode(p.Value, value);
                 var reply = client.Write(module.Id, p.Address, value[..p.Field.Size]);
@@ -36,28 +35,27 @@ public sealed partial class VirtualRobot
         }
 
         // Last, the baud (it takes effect after the reply); then the host side follows.
-        if (BaudRate != FactoryBaud)
+        if (robot.BaudRate != VirtualRobot.FactoryBaud)
         {
-            var code = ModuleParameters.BaudCode(BaudRate);
+            var code = ModuleParameters.BaudCode(robot.BaudRate);
             if (code < 0)
             {
-                throw new ArgumentException($"{BaudRate} baud is not one the modules support");
+                throw new ArgumentException($"{robot.BaudRate} baud is not one the modules support");
             }
 
-            foreach (var module in _modules)
+            foreach (var module in modules)
             {
                 var reply = client.Write(module.Id, table["baud_rate"].At(0), [(byte)code]);
                 if (!reply.Succeeded)
                 {
-                    throw new InvalidOperationException($"commissioning module {module.Id}: setting {BaudRate} baud failed ({reply})");
+                    throw new InvalidOperationException($"commissioning module {module.Id}: setting {robot.BaudRate} baud failed ({reply})");
                 }
             }
 
-            Advance(TimeSpan.FromMilliseconds(1));
-            FirmwareHost.Check(FirmwareHost.BusSetBaud(_bus, (uint)BaudRate), "rcfw_bus_set_baud");
-            _byteUs = 10e6 / BaudRate;
+            robot.Advance(TimeSpan.FromMilliseconds(1));
+            robot.SetLineBaud(robot.BaudRate);
         }
 
-        Advance(TimeSpan.FromMilliseconds(5));
+        robot.Advance(TimeSpan.FromMilliseconds(5));
     }
 }

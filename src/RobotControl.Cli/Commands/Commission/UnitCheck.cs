@@ -1,0 +1,45 @@
+using RobotControl.Bus.Client;
+using RobotControl.Bus.Protocol;
+using RobotControl.Modules;
+
+namespace RobotControl.Cli.Commands.Commission;
+
+/// <summary>What <c>discover --unit</c> compares: every module of a unit file against the bus (it answers at its ID, with its firmware version, and every recorded parameter reads back as recorded).</summary>
+internal static class UnitCheck
+{
+    /// <summary>One line per difference, naming the module and what differs (none: the unit is as commissioned).</summary>
+    public static IReadOnlyList<string> Differences(BusClient client, UnitFile unit)
+    {
+        ArgumentNullException.ThrowIfNull(client);
+        ArgumentNullException.ThrowIfNull(unit);
+        var table = ControlTable.Firmware;
+        var reader = new ParameterWriter(client, table);
+        var lines = new List<string>();
+        foreach (var module in unit.Modules)
+        {
+            var what = $"module {module.Id} ({module.Name})";
+            if (client.Ping(module.Id, out var info).Outcome != ReplyOutcome.Ok)
+            {
+                lines.Add($"{what}: does not answer at id {module.Id}");
+                continue;
+            }
+
+            if (info.FirmwareVersion != module.FirmwareVersion)
+            {
+                lines.Add($"{what}: firmware {info.FirmwareVersion}, the unit file says {module.FirmwareVersion}");
+            }
+
+            foreach (var (key, recorded) in module.Parameters)
+            {
+                var (field, motor) = UnitFile.Parse(table, key);
+                var actual = reader.Read(module.Id, field.Name, motor);
+                if (actual != recorded)
+                {
+                    lines.Add($"{what}: {key} is {actual}, the unit file says {recorded}");
+                }
+            }
+        }
+
+        return lines;
+    }
+}
