@@ -14,7 +14,7 @@ export function statusPage(root: HTMLElement): () => void {
     const reply = await api<{ message: string }>('POST', '/recording', { on: recording === null });
     await refreshRecording();
     return reply;
-  }), { 'data-testid': 'record' });
+  }), { 'data-testid': 'record', 'data-operator': '' });
   const recordingText = el('span', { 'data-testid': 'recording-file' });
   async function refreshRecording(): Promise<void> {
     recording = (await api<{ recordingFile: string | null }>('GET', '/recording')).recordingFile;
