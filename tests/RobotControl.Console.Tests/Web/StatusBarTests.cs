@@ -39,7 +39,7 @@ public sealed class StatusBarTests(ConsoleFixture console, ITestOutputHelper out
                     await Expect(page, "#role[data-role=watching]", "watching");
                     foreach (var key in new[] { "Space", "Escape" })
                     {
-                        await Timed(measured, page, name, "lapsed", key, bound);
+                        await Timed(measured, page, name, "lapsed", key);
                     }
 
                     // The role held by another console.
@@ -47,7 +47,7 @@ public sealed class StatusBarTests(ConsoleFixture console, ITestOutputHelper out
                     await Expect(page, "#role[data-role=held]", "held by another console");
                     foreach (var key in new[] { "Space", "Escape" })
                     {
-                        await Timed(measured, page, name, "held by another", key, bound);
+                        await Timed(measured, page, name, "held by another", key);
                     }
                 }
                 finally
@@ -58,21 +58,26 @@ public sealed class StatusBarTests(ConsoleFixture console, ITestOutputHelper out
         }
         finally
         {
-            output.WriteLine($"E-STOP by key, key press to the answer saying E_STOP (bound {bound.TotalMilliseconds:F0} ms); in brackets the key's wait for the page, the request's round trip, and the test's PressAsync to the server's E_STOP:");
+            output.WriteLine($"E-STOP by key, key press to the server's run level E_STOP (bound {bound.TotalMilliseconds:F0} ms); in brackets the key's wait for the page, key press to the E-STOP answer in the page, and the test's PressAsync to E_STOP:");
             foreach (var m in measured)
             {
-                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  {m.Page,-8} role {m.Role,-16} {m.Key,-7} {m.FromKeyMs,6:F1} ms  ({m.WaitedMs:F1}, {m.RoundTripMs:F1}, {m.HarnessMs:F1} ms)"));
+                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  {m.Page,-8} role {m.Role,-16} {m.Key,-7} {m.FromKeyMs,6:F1} ms  ({m.WaitedMs:F1}, {m.AnswerMs:F1}, {m.HarnessMs:F1} ms)"));
             }
 
             if (measured.Count > 0)
             {
                 var sorted = measured.Select(m => m.FromKeyMs).Order().ToList();
+                var answer = measured.Select(m => m.AnswerMs).Order().ToList();
                 var harness = measured.Select(m => m.HarnessMs).Order().ToList();
-                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  {sorted.Count} stops: median {sorted[sorted.Count / 2]:F1} ms, max {sorted[^1]:F1} ms; PressAsync to E_STOP median {harness[harness.Count / 2]:F1} ms, max {harness[^1]:F1} ms"));
+                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  {sorted.Count} stops: median {sorted[sorted.Count / 2]:F1} ms, max {sorted[^1]:F1} ms; answer in the page median {answer[answer.Count / 2]:F1} ms, max {answer[^1]:F1} ms; PressAsync to E_STOP median {harness[harness.Count / 2]:F1} ms, max {harness[^1]:F1} ms"));
             }
 
             await Restore();
         }
+
+        Assert.Equal(Pages.Length * 4, measured.Count);
+        var over = measured.Where(m => m.FromKeyMs > bound.TotalMilliseconds).Select(m => string.Create(CultureInfo.InvariantCulture, $"{m.Key} on {m.Page} (role {m.Role}): {m.FromKeyMs:F1} ms"));
+        Assert.True(!over.Any(), $"E_STOP later than {bound.TotalMilliseconds:F0} ms after the key press: {string.Join("; ", over)}");
     }
 
     [Fact]
@@ -218,14 +223,15 @@ public sealed class StatusBarTests(ConsoleFixture console, ITestOutputHelper out
     }
 
     /// <summary>
-    /// In the page, before its own scripts: when each key event was made (the key press as the browser has it), how
-    /// long it waited for the page's main thread, and when the answer to the E-STOP it sent came back. The server
-    /// answers E-STOP once its run level is E_STOP, so key press to answer bounds key press to E_STOP from above.
+    /// In the page, before its own scripts: when each key event was made (the key press as the browser has it, on the
+    /// machine's wall clock, which the test shares), how long it waited for the page's main thread, and when the
+    /// answer to the E-STOP it sent came back (after the server's E_STOP and its snapshots).
     /// </summary>
     private const string KeyTiming = @"
         window.rcKeys = [];
         let keyAt = 0, waited = 0;
         addEventListener('keydown', (e) => { keyAt = e.timeStamp; waited = performance.now() - e.timeStamp; }, { capture: true });
+        const epochOf = (t) => performance.timeOrigin + t;
         const plainFetch = window.fetch;
         window.fetch = async (url, options) => {
             if (!String(url).endsWith('/api/estop')) return plainFetch(url, options);
@@ -233,32 +239,35 @@ public sealed class StatusBarTests(ConsoleFixture console, ITestOutputHelper out
             const answer = await plainFetch(url, options);
             const text = await answer.clone().text();
             const now = performance.now();
-            window.rcKeys.push({ waited, roundTrip: now - sent, fromKey: now - keyAt, answer: text });
+            window.rcKeys.push({ keyEpochMs: epochOf(keyAt), waited, roundTrip: now - sent, fromKey: now - keyAt, answer: text });
             return answer;
         };";
 
     /// <summary>
-    /// Presses <paramref name="key"/> and asserts that the server's run level is E_STOP within <paramref name="bound"/>
-    /// of the key press (in the page: key event to the answer saying E_STOP); adds the figures to <paramref name="measured"/>.
+    /// Presses <paramref name="key"/>, waits for the server's run level E_STOP and adds the figures to
+    /// <paramref name="measured"/> (in the page: key event to the answer saying E_STOP; the bound is asserted over all).
     /// </summary>
-    private async Task Timed(List<Press> measured, IPage page, string name, string role, string key, TimeSpan bound)
+    private async Task Timed(List<Press> measured, IPage page, string name, string role, string key)
     {
         await console.Session.ClearFaultsAsync(); // out of E_STOP (motors off): the key's stop is measured from another level
         await Until(() => console.Session.RunLevelNow != "E_STOP", "the reset");
         var clock = Stopwatch.StartNew();
         await page.Keyboard.PressAsync(key);
         await Until(() => console.Session.RunLevelNow == "E_STOP", $"{key} on the {name} page");
+        var seenAtMs = (DateTime.UtcNow - DateTime.UnixEpoch).TotalMilliseconds;
         var harness = clock.Elapsed.TotalMilliseconds;
         await page.WaitForFunctionAsync("() => window.rcKeys.length > 0");
         var k = await page.EvaluateAsync<JsonElement>("() => window.rcKeys.shift()");
-        var press = new Press(name, role, key, k.GetProperty("fromKey").GetDouble(), k.GetProperty("waited").GetDouble(), k.GetProperty("roundTrip").GetDouble(), harness);
-        measured.Add(press);
         Assert.Contains("run level E_STOP", k.GetProperty("answer").GetString(), StringComparison.Ordinal);
-        Assert.True(press.FromKeyMs <= bound.TotalMilliseconds, $"{key} on {name}: E_STOP answered {press.FromKeyMs:F1} ms after the key press, over {bound.TotalMilliseconds:F0} ms");
+        measured.Add(new Press(name, role, key, seenAtMs - k.GetProperty("keyEpochMs").GetDouble(), k.GetProperty("waited").GetDouble(), k.GetProperty("fromKey").GetDouble(), harness));
     }
 
-    /// <summary>One E-STOP by key: key press to the E_STOP answer, the key's wait for the page, the request's round trip (in the page), and the test's PressAsync to the run level it reads.</summary>
-    private sealed record Press(string Page, string Role, string Key, double FromKeyMs, double WaitedMs, double RoundTripMs, double HarnessMs);
+    /// <summary>
+    /// One E-STOP by key: the key event's time (wall clock) to the test seeing the server's run level at E_STOP (the
+    /// figure asserted); in the page, the key's wait for the main thread and key press to the E-STOP answer; and the
+    /// test's PressAsync call to E_STOP (with the browser protocol's delivery of the key).
+    /// </summary>
+    private sealed record Press(string Page, string Role, string Key, double FromKeyMs, double WaitedMs, double AnswerMs, double HarnessMs);
 
     private async Task Until(Func<bool> done, string what)
     {
