@@ -142,6 +142,28 @@ public sealed class StatusBarTests(ConsoleFixture console, ITestOutputHelper out
     }
 
     [Fact]
+    public async Task After_an_E_STOP_the_bar_and_the_status_page_word_the_trip_plainly()
+    {
+        var page = await Open("status");
+        try
+        {
+            using var http = console.Client("stopper");
+            (await http.PostAsync("api/estop", null)).EnsureSuccessStatusCode();
+            await Expect(page, "[data-testid=bar-level][data-level=E_STOP]", "E-STOP");
+            await Expect(page, "[data-testid=bar-faults]", "Emergency stop pressed — ");
+            await Expect(page, "[data-testid=run-status]", "Emergency stop pressed — ");
+            var shown = await page.GetByTestId("bar-faults").InnerTextAsync() + await page.GetByTestId("run-status").InnerTextAsync();
+            Assert.DoesNotContain("SafetyTrip", shown, StringComparison.Ordinal);
+            Assert.DoesNotContain("trip:", shown, StringComparison.Ordinal);
+        }
+        finally
+        {
+            await Close(page);
+            await Restore();
+        }
+    }
+
+    [Fact]
     public async Task The_bar_says_at_once_in_full_width_that_the_server_cannot_be_reached()
     {
         var server = await ConsoleServer.StartAsync(console.Session, BindAddress.Parse("127.0.0.1:0"), null);

@@ -1,4 +1,4 @@
-import { act, api, onReach, show, type StatusReply } from './api';
+import { act, api, onReach, show, type SessionStatus, type StatusReply } from './api';
 import { button, el } from './dom';
 import { watchRole, type RoleState } from './role';
 import type { SurgeonView } from './surgeon/types';
@@ -40,6 +40,15 @@ function onKey(e: KeyboardEvent): void {
 /** "ModuleMissing" -> "module missing". */
 function words(name: string): string {
   return name.replace(/([a-z])([A-Z])/g, '$1 $2').toLowerCase();
+}
+
+/**
+ * The faults in plain words, newest trip first: the supervisor's trips as the surgeon's view words them, then the robot
+ * layer's fault flags in words. Where no trip is worded (a replay), the status's own lines stand.
+ */
+export function faultWords(status: SessionStatus, surgeon: SurgeonView): string[] {
+  if (surgeon.faults.length === 0 && status.faults.some((f) => f.startsWith('trip:'))) return status.faults;
+  return [...surgeon.faults.slice().reverse().map((f) => f.words), ...status.faults.filter((f) => !f.startsWith('trip:')).map(words)];
 }
 
 export function statusBar(bar: HTMLElement, unreachable: HTMLElement): void {
@@ -90,7 +99,7 @@ export function statusBar(bar: HTMLElement, unreachable: HTMLElement): void {
     level.dataset.level = s.robotState;
     motors.textContent = s.torqueOn ? 'motors on' : 'motors off';
     motors.dataset.on = String(s.torqueOn);
-    const plain = [...surgeon.faults.slice(-3).reverse().map((f) => f.words), ...s.faults.filter((f) => !f.startsWith('trip:')).map(words)];
+    const plain = faultWords(s, surgeon).slice(0, 3);
     faults.textContent = plain.length === 0 ? 'no faults' : plain.join(' · ');
     faults.classList.toggle('active', plain.length > 0);
     const state: RoleState = reply.operator.you ? 'operator' : reply.operator.held ? 'held' : 'watching';
