@@ -16,7 +16,7 @@ export function editorPage(root: HTMLElement): () => void {
   const fileName = el('input', { 'data-testid': 'file-name', 'aria-label': 'file name to save as', value: 'untitled.json', spellcheck: 'false', size: '18' });
   const undo = button('Undo', () => step(false), { title: 'Ctrl+Z', 'data-testid': 'undo' });
   const redo = button('Redo', () => step(true), { title: 'Ctrl+Shift+Z', 'data-testid': 'redo' });
-  const start = button('Start', () => void startGraph(), { class: 'primary', 'data-testid': 'start', 'data-operator': '' });
+  const start = button('Start', () => void startGraph(), { class: 'primary', 'data-testid': 'start' });
   const stop = button('Stop', () => void act(async () => { await api('POST', '/editor/stop'); await refreshRun(); return { message: 'stopped: motors off' }; }), { 'data-testid': 'stop' });
   const runState = el('span', { class: 'run-state', 'data-testid': 'run-state' });
   const palette = el('aside', { class: 'ged-palette', 'data-testid': 'palette' });
