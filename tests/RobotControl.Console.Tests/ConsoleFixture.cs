@@ -125,6 +125,38 @@ public sealed class ConsoleFixture : IAsyncLifetime
         }
     }
 
+    /// <summary>
+    /// A fresh browser context (1400x900) on page <paramref name="hash"/>, the role freed first, <paramref name="initScript"/>
+    /// run before the page's own; with <paramref name="operate"/> the page takes the operator role.
+    /// </summary>
+    public async Task<IPage> OpenPage(string hash, bool operate, string? initScript = null)
+    {
+        ReleaseOperator();
+        var context = await Browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 900 } });
+        if (initScript is not null)
+        {
+            await context.AddInitScriptAsync(initScript);
+        }
+
+        var page = await context.NewPageAsync();
+        await page.GotoAsync(PageUrl(Server, hash));
+        if (operate)
+        {
+            await page.Locator("#claim").ClickAsync();
+        }
+
+        await Web.PageTests.Expect(page, "#role", operate ? "operator" : "watching");
+        await page.WaitForTimeoutAsync(700);
+        return page;
+    }
+
+    /// <summary>Closes <paramref name="page"/>'s context and frees the role.</summary>
+    public async Task ClosePage(IPage page)
+    {
+        await page.Context.CloseAsync();
+        ReleaseOperator();
+    }
+
     /// <summary>A motor's live view from the API.</summary>
     public static async Task<System.Text.Json.JsonElement> Motor(HttpClient http, string name)
     {

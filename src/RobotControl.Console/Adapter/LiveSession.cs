@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using RobotControl.Host.Recording;
+using RobotControl.Host.Safety;
 using RobotControl.Host.Session;
 using RobotControl.Kinematics.Urdf;
 using RobotControl.Plugins.Sdk;
@@ -240,6 +241,9 @@ public sealed class LiveSession : IConsoleSession
 
     /// <summary>The virtual robot's own output angle of <paramref name="motor"/> in degrees (tests: the simulation's truth), read on the session thread.</summary>
     internal Task<double> VirtualOutputDeg(string motor) => _motors.VirtualOutputDeg(motor);
+
+    /// <summary>The safety supervisor's run level now (not the published status's, which may be up to <see cref="StatusPublisher.Every"/> old): what the tests time E-STOP by key against.</summary>
+    internal string RunLevelNow => _session.Supervisor.Level.Name();
 
     private static ComponentTiming Timing(string name, TickStatistics s) => new(name, s.Count, s.MedianUs, s.P99Us, s.MaxUs);
 

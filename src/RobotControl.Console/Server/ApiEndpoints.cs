@@ -6,8 +6,9 @@ using RobotControl.WebConsole.Session;
 namespace RobotControl.WebConsole.Server;
 
 /// <summary>
-/// The JSON API (see docs/console.md). Reads are open to every console with the token; actions (and re-reading
-/// parameters, which costs bus time) need the operator role. The emergency stop is not here: <see cref="AccessControl"/>
+/// The JSON API (see docs/console.md). Reads are open to every console with the token, and so is stopping a jog (and
+/// the status poll, the holder's heartbeat, renews the operator role); actions (and re-reading parameters, which costs
+/// bus time) need the operator role. The emergency stop is not here: <see cref="AccessControl"/>
 /// answers it for every console, watching or operating, with or without the token.
 /// </summary>
 internal static class ApiEndpoints
@@ -51,6 +52,8 @@ internal static class ApiEndpoints
         }).Witnessed(session, role);
 
         // POST /api/estop is answered by AccessControl, before the token, the rate limits and routing: any console may stop.
+        // Stopping a jog needs no role either: any console with the token may stop a motor (it holds where it is).
+        api.MapPost("/motors/{motor}/stop", async (string motor) => Result(await session.JogAsync(motor, 0).ConfigureAwait(false))).Witnessed(session, role);
         var actions = OperatorOnly(api.MapGroup(string.Empty).Witnessed(session, role), role); // noted first: a refused command is noted too
         actions.MapPost("/controllers/{id:int}/reload", async (int id) => Result(await session.ReloadParametersAsync(id).ConfigureAwait(false))).RequireRateLimiting(RateLimits.Bus);
         actions.MapPost("/discover", async () => Result(await session.DiscoverAsync().ConfigureAwait(false))).RequireRateLimiting(RateLimits.Bus);

@@ -29,6 +29,9 @@ internal static class GraphEndpoints
         }).RequireRateLimiting(RateLimits.Editor);
         api.MapGet("/run", () => ApiEndpoints.Json(editor.Runner.View));
 
+        // Stopping the run (motors off) needs no role: stopping is never a privilege.
+        api.MapPost("/stop", async () => ApiEndpoints.Json(await editor.Runner.StopAsync().ConfigureAwait(false))).RequireRateLimiting(RateLimits.Editor);
+
         // Writing a file or switching the session: the operator's.
         var actions = ApiEndpoints.OperatorOnly(api.MapGroup(string.Empty), role);
         actions.MapPut("/graphs/{name}", async (string name, HttpRequest request) =>
@@ -55,7 +58,6 @@ internal static class GraphEndpoints
             var run = await editor.Runner.StartAsync(editor.Folder.Resolve(name, out _)!).ConfigureAwait(false);
             return run.Running ? ApiEndpoints.Json(run) : ApiEndpoints.Error(StatusCodes.Status422UnprocessableEntity, run.Problem ?? $"{name} did not start");
         }).RequireRateLimiting(RateLimits.Editor);
-        actions.MapPost("/stop", async () => ApiEndpoints.Json(await editor.Runner.StopAsync().ConfigureAwait(false))).RequireRateLimiting(RateLimits.Editor);
     }
 
     private static IResult Bad(string? problem) => ApiEndpoints.Error(StatusCodes.Status400BadRequest, problem ?? "give {\"graph\": {...}}");

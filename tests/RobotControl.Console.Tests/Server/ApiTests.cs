@@ -37,6 +37,24 @@ public sealed class ApiTests(ConsoleFixture console)
     }
 
     [Fact]
+    public async Task A_watching_client_stops_another_consoles_jog()
+    {
+        using var operatorClient = await console.Operator("operator-jogging");
+        using var watcher = console.Client("watcher-stopping");
+        (await operatorClient.PostAsJsonAsync("api/pedal", new { down = true })).EnsureSuccessStatusCode();
+        (await operatorClient.PostAsJsonAsync("api/motors/right.elbow/jog", new { degPerS = 5 })).EnsureSuccessStatusCode();
+
+        var response = await watcher.PostAsync("api/motors/right.elbow/stop", null);
+
+        Assert.Equal(HttpStatusCode.OK, response.StatusCode);
+        Assert.Contains("jog stopped, holding", await response.Content.ReadAsStringAsync(), StringComparison.Ordinal);
+        Assert.Equal("operator-jogging", console.Server.Operator.Holder); // the role stays where it was
+        (await operatorClient.PostAsync("api/motors/right.elbow/release", null)).EnsureSuccessStatusCode();
+        (await operatorClient.PostAsJsonAsync("api/pedal", new { down = false })).EnsureSuccessStatusCode();
+        console.ReleaseOperator();
+    }
+
+    [Fact]
     public async Task Bad_input_gets_4xx_with_a_message_and_nothing_applied()
     {
         using var http = await console.Operator("operator-bad-input");

@@ -189,27 +189,9 @@ public sealed class PageTests(ConsoleFixture console)
         await Close(page);
     }
 
-    private async Task<IPage> Open(string hash, bool operate)
-    {
-        console.ReleaseOperator();
-        var context = await console.Browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 900 } });
-        var page = await context.NewPageAsync();
-        await page.GotoAsync(ConsoleFixture.PageUrl(console.Server, hash));
-        if (operate)
-        {
-            await page.Locator("#claim").ClickAsync();
-            await Expect(page, "#role", "operator");
-        }
+    private Task<IPage> Open(string hash, bool operate) => console.OpenPage(hash, operate);
 
-        await page.WaitForTimeoutAsync(700);
-        return page;
-    }
-
-    private async Task Close(IPage page)
-    {
-        await page.Context.CloseAsync();
-        console.ReleaseOperator();
-    }
+    private Task Close(IPage page) => console.ClosePage(page);
 
     private static async Task Post(HttpClient http, string path, string json) =>
         (await http.PostAsync(path, new StringContent(json, System.Text.Encoding.UTF8, "application/json"))).EnsureSuccessStatusCode();
@@ -221,7 +203,8 @@ public sealed class PageTests(ConsoleFixture console)
         await Expect(page, "#message.ok", text);
     }
 
-    private static async Task Expect(IPage page, string selector, string text)
+    /// <summary>Waits up to 15 s for an element matching <paramref name="selector"/> whose text contains <paramref name="text"/>; fails with the message line.</summary>
+    internal static async Task Expect(IPage page, string selector, string text)
     {
         try
         {

@@ -28,12 +28,29 @@ export class ApiError extends Error {
   }
 }
 
+// Whether the server answered the last request: a fetch that fails (no answer at all) tells the status bar at once,
+// and so does the next answer.
+const reachListeners: ((reached: boolean) => void)[] = [];
+export function onReach(listener: (reached: boolean) => void): void {
+  reachListeners.push(listener);
+}
+export function reached(yes: boolean): void {
+  for (const l of reachListeners) l(yes);
+}
+
 export async function api<T>(method: string, path: string, body?: unknown): Promise<T> {
-  const response = await fetch(`/api${path}`, {
-    method,
-    headers: { 'X-Console-Client': clientId, ...(token ? { Authorization: `Bearer ${token}` } : {}), ...(body === undefined ? {} : { 'Content-Type': 'application/json' }) },
-    body: body === undefined ? undefined : JSON.stringify(body),
-  });
+  let response: Response;
+  try {
+    response = await fetch(`/api${path}`, {
+      method,
+      headers: { 'X-Console-Client': clientId, ...(token ? { Authorization: `Bearer ${token}` } : {}), ...(body === undefined ? {} : { 'Content-Type': 'application/json' }) },
+      body: body === undefined ? undefined : JSON.stringify(body),
+    });
+  } catch (e) {
+    reached(false);
+    throw new ApiError(0, `${method} /api${path}: the console server cannot be reached (${(e as Error).message})`);
+  }
+  reached(true);
   const text = await response.text();
   const data = text.length > 0 ? JSON.parse(text) : {};
   if (!response.ok) {
@@ -42,10 +59,12 @@ export async function api<T>(method: string, path: string, body?: unknown): Prom
   return data as T;
 }
 
+/** The message line under the status bar: a refusal or failure is a full-width banner (role=alert) with the server's line. */
 export function show(message: string, error = false): void {
   const box = document.getElementById('message')!;
   box.textContent = message;
   box.className = error ? 'error' : 'ok';
+  box.setAttribute('role', error ? 'alert' : 'status');
 }
 
 /** Runs an action, showing its result line (or the server's error) in the message bar. */

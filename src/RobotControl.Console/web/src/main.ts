@@ -1,7 +1,7 @@
 import './style.css';
-import { api, act, show, type StatusReply } from './api';
 import { busPage } from './pages/bus';
 import { replayBar } from './replay';
+import { statusBar } from './statusbar';
 
 /** A page: renders into its element, and stops its timers and sockets when left. */
 export type Page = (root: HTMLElement) => () => void;
@@ -32,27 +32,7 @@ async function route(): Promise<void> {
   if (current === visit) leave = page(root);
 }
 
-async function heartbeat(): Promise<void> {
-  try {
-    const reply = await api<StatusReply>('GET', '/status');
-    document.getElementById('robot')!.textContent = `${reply.status.robot} · ${reply.status.transport}`;
-    const role = document.getElementById('role')!;
-    role.textContent = reply.operator.you ? 'operator' : reply.operator.held ? 'watching (another console operates)' : 'watching';
-    role.dataset.role = reply.operator.you ? 'operator' : 'watcher';
-    document.getElementById('claim')!.hidden = reply.operator.you;
-  } catch (e) {
-    show((e as Error).message, true);
-  }
-}
-
-document.getElementById('claim')!.addEventListener('click', () =>
-  act(async () => {
-    await api('POST', '/operator');
-    await heartbeat();
-    return { message: 'this console is the operator' };
-  }));
 window.addEventListener('hashchange', () => void route());
+statusBar(document.getElementById('statusbar')!, document.getElementById('unreachable')!);
 void route();
-void heartbeat();
 void replayBar(document.getElementById('replay')!);
-setInterval(() => void heartbeat(), 1000);

@@ -1,5 +1,5 @@
 // One WebSocket to /api/stream: subscribe to signals, receive the rows recorded since the last frame.
-import { token } from './api';
+import { reached, token } from './api';
 export interface Frame { t: number[]; v: number[][]; seq: number; id: number; dropped: number; serverMs: number }
 
 export class SignalStream {
@@ -38,7 +38,10 @@ export class SignalStream {
     const url = `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/api/stream?token=${encodeURIComponent(token ?? '')}`;
     const socket = new WebSocket(url);
     this.socket = socket;
-    socket.onopen = () => this.send(socket);
+    socket.onopen = () => {
+      reached(true);
+      this.send(socket);
+    };
     socket.onmessage = (e) => {
       const message = JSON.parse(e.data as string);
       const names = Array.isArray(message.t) ? this.sent.get((message as Frame).id) : undefined;
@@ -48,6 +51,7 @@ export class SignalStream {
     };
     socket.onclose = () => {
       if (!this.closed) {
+        reached(false); // the stream dropped: the status bar says so at once
         setTimeout(() => this.open(), 1000);
       }
     };

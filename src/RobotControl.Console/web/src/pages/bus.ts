@@ -1,18 +1,22 @@
 import { api, act, type ControllerView, type MotorView, type ParameterSpec, type StatusReply } from '../api';
 import { el, button, fmt } from '../dom';
+import { emergencyStop } from '../statusbar';
+
+/** Controls that need the operator role (role.ts disables them while this console watches). */
+const needsRole = { 'data-operator': '' };
 
 // Bus and controllers: discover; per controller its ID, friendly name, model, firmware, status and alerts; per motor
 // its live position/current/PWM, parameters (validated, written to FRAM after confirmation), jog, setpoint, home, torque.
 export function busPage(root: HTMLElement): () => void {
   const toolbar = el('div', { class: 'toolbar' },
-    button('Discover', () => void act(() => api('POST', '/discover')).then(refresh), { 'data-testid': 'discover' }),
-    button('Torque on', () => void act(() => api('POST', '/torque', { on: true })), { 'data-testid': 'torque-on' }),
-    button('Torque off', () => void act(() => api('POST', '/torque', { on: false })), { 'data-testid': 'torque-off' }),
-    button('Pedal down', () => void act(() => api('POST', '/pedal', { down: true })), { 'data-testid': 'pedal-down' }),
-    button('Pedal up', () => void act(() => api('POST', '/pedal', { down: false })), { 'data-testid': 'pedal-up' }),
-    button('Home all', () => void act(() => api('POST', '/home')), { 'data-testid': 'home-all' }),
-    button('Clear faults', () => void act(() => api('POST', '/faults/clear')), { 'data-testid': 'clear-faults' }),
-    button('E-STOP', () => void act(() => api('POST', '/estop')), { 'data-testid': 'estop', class: 'estop' }),
+    button('Discover', () => void act(() => api('POST', '/discover')).then(refresh), { 'data-testid': 'discover', ...needsRole }),
+    button('Torque on', () => void act(() => api('POST', '/torque', { on: true })), { 'data-testid': 'torque-on', ...needsRole }),
+    button('Torque off', () => void act(() => api('POST', '/torque', { on: false })), { 'data-testid': 'torque-off', ...needsRole }),
+    button('Pedal down', () => void act(() => api('POST', '/pedal', { down: true })), { 'data-testid': 'pedal-down', ...needsRole }),
+    button('Pedal up', () => void act(() => api('POST', '/pedal', { down: false })), { 'data-testid': 'pedal-up', ...needsRole }),
+    button('Home all', () => void act(() => api('POST', '/home')), { 'data-testid': 'home-all', ...needsRole }),
+    button('Clear faults', () => void act(() => api('POST', '/faults/clear')), { 'data-testid': 'clear-faults', ...needsRole }),
+    button('E-STOP', emergencyStop, { 'data-testid': 'estop', class: 'estop', 'aria-keyshortcuts': 'Space Escape' }),
     el('span', { class: 'level', 'data-testid': 'run-level' }));
   const list = el('div', { class: 'controllers', 'data-testid': 'controllers' });
   root.append(toolbar, list);
@@ -43,14 +47,14 @@ function controllerCard(c: ControllerView): HTMLElement {
   const name = el('input', { value: c.name, 'aria-label': `name of module ${c.id}`, size: '18' });
   const card = el('section', { class: 'controller', 'data-controller': String(c.id) },
     el('h3', {}, `Module ${c.id} `, name,
-      button('Rename', () => void act(() => api('PUT', `/controllers/${c.id}/name`, { name: name.value })))),
+      button('Rename', () => void act(() => api('PUT', `/controllers/${c.id}/name`, { name: name.value })), needsRole)),
     el('div', { class: 'facts' },
       el('span', { 'data-field': 'present' }), el('span', {}, `model ${c.model}`), el('span', {}, `firmware ${c.firmware}`),
       el('span', { 'data-field': 'reset' }), el('span', { 'data-field': 'watchdog' }), el('span', { 'data-field': 'alerts' }),
-      button('Re-read parameters', () => void act(() => api('POST', `/controllers/${c.id}/reload`))),
+      button('Re-read parameters', () => void act(() => api('POST', `/controllers/${c.id}/reload`)), needsRole),
       button('Reboot module', () => {
         if (confirm(`Reboot module ${c.id}? It resumes from FRAM.`)) void act(() => api('POST', `/controllers/${c.id}/reboot`));
-      }, { 'data-testid': `reboot-${c.id}` })),
+      }, { 'data-testid': `reboot-${c.id}`, ...needsRole })),
     el('table', { class: 'motors' },
       el('thead', {}, el('tr', {}, ...['motor', 'position °', 'current A', 'PWM', 'torque', 'errors', 'parameters', 'jog', 'setpoint', ''].map((h) => el('th', {}, h)))),
       el('tbody', {}, ...c.motors.map(motorRow))));
@@ -70,15 +74,15 @@ function motorRow(m: MotorView): HTMLElement {
     el('td', { 'data-field': 'errors' }),
     el('td', {}, el('div', { class: 'params' }, ...m.parameters.map((p) => parameterEditor(m, p)))),
     el('td', { class: 'jog' },
-      button('−', () => void jog(-1), { 'data-testid': `jog-minus-${m.name}` }),
-      button('stop', () => void jog(0), { 'data-testid': `jog-stop-${m.name}` }),
-      button('+', () => void jog(1), { 'data-testid': `jog-plus-${m.name}` }),
+      button('−', () => void jog(-1), { 'data-testid': `jog-minus-${m.name}`, ...needsRole }),
+      button('stop', () => void act(() => api('POST', `/motors/${m.name}/stop`)), { 'data-testid': `jog-stop-${m.name}` }),
+      button('+', () => void jog(1), { 'data-testid': `jog-plus-${m.name}`, ...needsRole }),
       speed, el('small', {}, '°/s')),
     el('td', {}, target,
-      button('Go', () => void act(() => api('POST', `/motors/${m.name}/setpoint`, { deg: Number(target.value) })))),
+      button('Go', () => void act(() => api('POST', `/motors/${m.name}/setpoint`, { deg: Number(target.value) })), needsRole)),
     el('td', {},
-      button('Home', () => void act(() => api('POST', `/motors/${m.name}/home`))),
-      button('Release', () => void act(() => api('POST', `/motors/${m.name}/release`)))));
+      button('Home', () => void act(() => api('POST', `/motors/${m.name}/home`)), needsRole),
+      button('Release', () => void act(() => api('POST', `/motors/${m.name}/release`)), needsRole)));
 }
 
 function parameterEditor(m: MotorView, p: ParameterSpec): HTMLElement {
@@ -95,7 +99,7 @@ function parameterEditor(m: MotorView, p: ParameterSpec): HTMLElement {
     if (confirm(`Write ${p.label} = ${value} ${p.unit} of ${m.name} into the module's FRAM?`)) {
       void act(() => api('PUT', `/motors/${m.name}/parameters/${p.key}`, { value })).then((ok) => { if (ok) input.dataset.dirty = ''; });
     }
-  }, { 'data-testid': `write-${p.key}-${m.name}` });
+  }, { 'data-testid': `write-${p.key}-${m.name}`, ...needsRole });
   input.addEventListener('input', () => { input.dataset.dirty = '1'; });
   return el('label', { title: `robot file: ${fmt(p.fileValue, 3)} ${p.unit}` }, `${p.label} `, input, ` ${p.unit} `, write);
 }

@@ -1,5 +1,7 @@
 import { act, api, type StatusReply } from '../api';
 import { button, el, fmt } from '../dom';
+import { faultWords } from '../statusbar';
+import type { SurgeonView } from '../surgeon/types';
 
 interface EventEntry { sequence: number; timeSeconds: number; source: string; message: string }
 interface Timing { component: string; count: number; medianUs: number; p99Us: number; maxUs: number }
@@ -14,7 +16,7 @@ export function statusPage(root: HTMLElement): () => void {
     const reply = await api<{ message: string }>('POST', '/recording', { on: recording === null });
     await refreshRecording();
     return reply;
-  }), { 'data-testid': 'record' });
+  }), { 'data-testid': 'record', 'data-operator': '' });
   const recordingText = el('span', { 'data-testid': 'recording-file' });
   async function refreshRecording(): Promise<void> {
     recording = (await api<{ recordingFile: string | null }>('GET', '/recording')).recordingFile;
@@ -29,14 +31,14 @@ export function statusPage(root: HTMLElement): () => void {
   let last = 0;
 
   async function refresh(): Promise<void> {
-    const { status: s } = await api<StatusReply>('GET', '/status');
+    const [{ status: s }, surgeon] = await Promise.all([api<StatusReply>('GET', '/status'), api<SurgeonView>('GET', '/surgeon')]);
     const rows: [string, string][] = [
       ['robot', `${s.robot} (${s.graph})`], ['transport', s.transport], ['modules', `${s.modulesFound} of ${s.modulesConfigured} found`],
       ['run level', s.robotState], ['robot layer', s.robotLayer], ['session', s.session], ['torque', s.torqueOn ? 'on' : 'off'], ['loop rate', `${s.loopRateHz} Hz`],
       ['ticks', String(s.ticks)], ['session time', `${fmt(s.sessionSeconds, 1)} s`],
       ['tick time', `median ${fmt(s.tickMedianUs, 1)} µs, p99 ${fmt(s.tickP99Us, 1)} µs, max ${fmt(s.tickMaxUs, 1)} µs`],
       ['deadline misses', String(s.deadlineMisses)],
-      ['allocated in ticks', s.tickAllocatedBytes === null ? 'not counted (real bus)' : `${s.tickAllocatedBytes} B in ${s.ticks} ticks`], ['faults', s.faults.join(', ') || 'none'], ['plug-in faults', String(s.pluginFaults)],
+      ['allocated in ticks', s.tickAllocatedBytes === null ? 'not counted (real bus)' : `${s.tickAllocatedBytes} B in ${s.ticks} ticks`], ['faults', faultWords(s, surgeon).join('; ') || 'none'], ['plug-in faults', String(s.pluginFaults)],
       ['bus', `${s.bus.cycles} cycles, ${s.bus.frames} frames, ${s.bus.crcErrors} CRC errors, ${s.bus.timeouts} timeouts, ${s.bus.retries} retries`],
     ];
     summary.replaceChildren(...rows.map(([k, v]) => el('tr', {}, el('th', {}, k), el('td', {}, v))));

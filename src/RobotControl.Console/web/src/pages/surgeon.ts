@@ -1,5 +1,6 @@
-import { act, api, type StatusReply } from '../api';
+import { api, type StatusReply } from '../api';
 import { el } from '../dom';
+import { emergencyStop } from '../statusbar';
 import { SignalStream, type Frame } from '../stream';
 import { faultsPanel } from '../surgeon/faults';
 import { handsPanel, type HandsPanel } from '../surgeon/hands';
@@ -43,15 +44,8 @@ export function surgeonPage(root: HTMLElement): () => void {
   let lastWall = 0;
   const wallMm = new Map<string, number | null>();
 
-  const stopNow = () => void act(async () => api<{ message: string }>('POST', '/estop'));
-  estop.addEventListener('click', stopNow);
-  const onKey = (e: KeyboardEvent) => {
-    if ((e.code === 'Space' || e.key === 'Escape') && !e.repeat && !(e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement)) {
-      e.preventDefault();
-      stopNow();
-    }
-  };
-  window.addEventListener('keydown', onKey);
+  estop.addEventListener('click', emergencyStop);
+  // Space and Esc: the status bar's keys, on every page.
 
   const stream = new SignalStream((subscribed, frame: Frame) => {
     if (subscribed.join() !== names.join() || frame.t.length === 0) return;
@@ -106,7 +100,6 @@ export function surgeonPage(root: HTMLElement): () => void {
 
   return () => {
     window.clearInterval(timer);
-    window.removeEventListener('keydown', onKey);
     observer.disconnect();
     stream.close();
     video.stop();

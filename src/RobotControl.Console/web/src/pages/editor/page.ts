@@ -12,8 +12,8 @@ import './editor.css';
 interface RunView { running: boolean; graph: string | null; transport: string; problem: string | null }
 
 export function editorPage(root: HTMLElement): () => void {
-  const graphs = el('select', { 'data-testid': 'graph-list' });
-  const fileName = el('input', { 'data-testid': 'file-name', value: 'untitled.json', spellcheck: 'false', size: '18' });
+  const graphs = el('select', { 'data-testid': 'graph-list', 'aria-label': 'graph file to load' });
+  const fileName = el('input', { 'data-testid': 'file-name', 'aria-label': 'file name to save as', value: 'untitled.json', spellcheck: 'false', size: '18' });
   const undo = button('Undo', () => step(false), { title: 'Ctrl+Z', 'data-testid': 'undo' });
   const redo = button('Redo', () => step(true), { title: 'Ctrl+Shift+Z', 'data-testid': 'redo' });
   const start = button('Start', () => void startGraph(), { class: 'primary', 'data-testid': 'start' });
@@ -26,7 +26,7 @@ export function editorPage(root: HTMLElement): () => void {
   root.append(el('div', { class: 'ged' },
     el('div', { class: 'toolbar ged-toolbar' },
       graphs, button('Load', () => void load(graphs.value), { 'data-testid': 'load' }), button('New', () => fresh(), { 'data-testid': 'new' }),
-      el('span', { class: 'sep' }), fileName, button('Save', () => void save(), { 'data-testid': 'save' }),
+      el('span', { class: 'sep' }), fileName, button('Save', () => void save(), { 'data-testid': 'save', 'data-operator': '' }),
       el('span', { class: 'sep' }), undo, redo, button('Fit', () => canvas.fit()),
       el('span', { class: 'sep' }), start, stop, runState),
     el('div', { class: 'ged-main' }, palette, canvasBox, el('aside', { class: 'ged-side' }, pane, problemList))));
