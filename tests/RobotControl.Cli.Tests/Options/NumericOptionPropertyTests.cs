@@ -130,6 +130,8 @@ public sealed class NumericOptionPropertyTests
             yield return option.Name switch
             {
                 "--motor" => "right.elbow",
+                "--transport" => "virtual:" + Cli.RepoFile("hardware/robots/lb-1.0.json"),
+                "--unit" => "property-test-unit",
                 "--out" => Path.Combine(Path.GetTempPath(), "rc-never-written"),
                 _ => throw new InvalidOperationException($"{command.Name}: no sample value for required option '{option.Name}'; add one here"),
             };

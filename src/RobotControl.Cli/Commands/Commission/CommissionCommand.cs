@@ -23,7 +23,7 @@ internal sealed class CommissionCommand : ICliCommand
     /// <inheritdoc />
     public Command Build()
     {
-        var robotFile = new Argument<FileInfo>("robot-file") { Description = "The robot data file the unit is built to, e.g. hardware/robots/lb-1.0.json" };
+        var robotFile = new Argument<FileInfo>("robot") { Description = "The robot data file the unit is built to, e.g. hardware/robots/lb-1.0.json" };
         var transport = new Option<string>("--transport") { Description = "The bus, e.g. serial:/dev/ttyUSB0 (opened at the factory baud)", Required = true };
         var unit = new Option<string>("--unit") { Description = "The unit's name: its record is <units>/<name>.json", Required = true };
         var units = new Option<DirectoryInfo>("--units") { Description = $"Directory of unit files (default {DefaultUnitsDirectory})" };
