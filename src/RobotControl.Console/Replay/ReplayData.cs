@@ -49,10 +49,14 @@ internal sealed class ReplayData : IDisposable
     /// <summary>The ring's signal names.</summary>
     public List<string> Names { get; } = [];
 
+    /// <summary>The recorded loop's rate (Hz, its metadata), or 0 when the metadata does not say.</summary>
+    public double LoopRateHz =>
+        double.TryParse(Meta.GetValueOrDefault("loop_rate_hz"), NumberStyles.Float, CultureInfo.InvariantCulture, out var hz) && hz > 0 ? hz : 0;
+
     /// <summary>Time between two recorded rows of the graph's signals (decimation over loop rate), seconds; 1 when the metadata does not say.</summary>
     public double RowSpacingSeconds =>
-        double.TryParse(Meta.GetValueOrDefault("loop_rate_hz"), NumberStyles.Float, CultureInfo.InvariantCulture, out var hz) && hz > 0
-            ? (int.TryParse(Meta.GetValueOrDefault("decimate"), NumberStyles.Integer, CultureInfo.InvariantCulture, out var n) && n > 0 ? n : 1) / hz
+        LoopRateHz > 0
+            ? (int.TryParse(Meta.GetValueOrDefault("decimate"), NumberStyles.Integer, CultureInfo.InvariantCulture, out var n) && n > 0 ? n : 1) / LoopRateHz
             : 1;
 
     /// <summary>Length of the recording, seconds.</summary>
@@ -99,8 +103,7 @@ internal sealed class ReplayData : IDisposable
     {
         if (File.Messages([Signals]).FirstOrDefault() is { } first)
         {
-            using var doc = JsonDocument.Parse(first.Data);
-            Leaves(doc.RootElement, string.Empty, Names);
+            Names.AddRange(CsvExport.LeafNames(first.Data));
         }
 
         SignalCount = Names.Count;
@@ -155,21 +158,6 @@ internal sealed class ReplayData : IDisposable
             {
                 Timeline.Add((t, Text(e, "who"), Text(e, "what")));
             }
-        }
-    }
-
-    /// <summary>The names of <paramref name="e"/>'s leaves, as the CSV export names its columns (<c>instance.port</c>).</summary>
-    private static void Leaves(JsonElement e, string prefix, List<string> names)
-    {
-        if (e.ValueKind != JsonValueKind.Object)
-        {
-            names.Add(prefix);
-            return;
-        }
-
-        foreach (var p in e.EnumerateObject())
-        {
-            Leaves(p.Value, prefix.Length == 0 ? p.Name : $"{prefix}.{p.Name}", names);
         }
     }
 

@@ -260,7 +260,6 @@ public sealed class ReplaySession : IConsoleSession
     {
         var level = _data.Levels.LastOrDefault(l => l.Seconds <= _position).Level ?? "INIT";
         var trips = _data.Timeline.Where(e => e.Seconds <= _position && e.Message.StartsWith("trip: ", StringComparison.Ordinal)).Select(e => e.Message).ToList();
-        var rate = double.TryParse(_data.Meta.GetValueOrDefault("loop_rate_hz"), NumberStyles.Float, CultureInfo.InvariantCulture, out var hz) ? hz : 0;
         var state = Damaged ?? string.Create(CultureInfo.InvariantCulture, $"replay {(_playing ? "playing" : "paused")} at {_rate:0.##}x, {_position:F3} of {DurationSeconds:F3} s");
         return new SessionStatus(
             _data.Meta.GetValueOrDefault("robot") ?? "?",
@@ -268,7 +267,7 @@ public sealed class ReplaySession : IConsoleSession
             "replay:" + _file,
             0,
             0,
-            rate,
+            _data.LoopRateHz,
             _rows.Count,
             0,
             0,

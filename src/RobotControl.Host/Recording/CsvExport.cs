@@ -32,9 +32,10 @@ public static class CsvExport
         var channel = file.Channel(topic) ?? throw new ArgumentException($"no topic {topic}", nameof(topic));
         var columns = new Columns();
         var rows = new List<string?[]>();
+        var start = StartNs(file);
         foreach (var message in file.Messages([channel.Id]))
         {
-            rows.Add(columns.Row(message, StartNs(file)));
+            rows.Add(columns.Row(message, start));
         }
 
         return new Table(columns.Names, rows);
@@ -77,6 +78,15 @@ public static class CsvExport
                 table.Dispose();
             }
         }
+    }
+
+    /// <summary>The column names of <paramref name="json"/>'s leaves, in order, as a table of its topic names them (<c>instance.port</c>): the names the replay gives the plots.</summary>
+    public static List<string> LeafNames(ReadOnlyMemory<byte> json)
+    {
+        using var doc = JsonDocument.Parse(json);
+        var names = new List<string>();
+        Flatten(doc.RootElement, string.Empty, (name, _) => names.Add(name));
+        return names;
     }
 
     /// <summary>The columns of one topic's table, in the order their leaves first appear.</summary>
