@@ -112,7 +112,8 @@ public static class HeadlessRun
 
                 safetyFaults.AfterTick(at);
             },
-            stopper.ShouldStop);
+            stopper.ShouldStop,
+            options.TickCost);
         hooks?.AfterRun?.Invoke(session);
         var elapsed = clock.GetElapsedTime(begin);
         var check = session.Stop(); // motors off and read back first; the recording's end after

@@ -43,6 +43,13 @@ public sealed record RunOptions
     /// <summary>Loop time to run.</summary>
     public TimeSpan Duration { get; init; } = TimeSpan.FromSeconds(20);
 
+    /// <summary>
+    /// Virtual runs: whether a tick's CPU time counts against its period (<see cref="Session.VirtualTickCost.Measured"/>,
+    /// the default: a graph too slow for its rate misses) or ticks take no loop time
+    /// (<see cref="Session.VirtualTickCost.Free"/>: the run is exactly reproducible; <c>--tick-cost free</c>).
+    /// </summary>
+    public Session.VirtualTickCost TickCost { get; init; } = Session.VirtualTickCost.Measured;
+
     /// <summary>Faults injected into the virtual robot.</summary>
     public FaultInjection Inject { get; init; } = FaultInjection.None;
 

@@ -159,14 +159,15 @@ public sealed class RobotSession : IDisposable
     /// <param name="afterCycle">Runs after each bus cycle (progress, events).</param>
     /// <param name="aroundTick">Runs each tick instead of <see cref="ControlLoop.Step"/>.</param>
     /// <param name="stopWhen">Checked after each bus cycle: true ends the run early (a stop request, a robot fault).</param>
-    public void RunVirtual(long ticks, Action? afterCycle = null, Action<ControlLoop, long>? aroundTick = null, Func<bool>? stopWhen = null)
+    /// <param name="tickCost">Whether a tick's CPU time counts against its period (<see cref="VirtualSchedule"/>).</param>
+    public void RunVirtual(long ticks, Action? afterCycle = null, Action<ControlLoop, long>? aroundTick = null, Func<bool>? stopWhen = null, VirtualTickCost tickCost = VirtualTickCost.Measured)
     {
         if (_loopClock is null || Connection.VirtualClock is null)
         {
             throw new InvalidOperationException("RunVirtual needs a virtual session (SessionOptions.Virtual)");
         }
 
-        new VirtualSchedule(Robot, Connection.VirtualClock, _loopClock, Loop, ticks, aroundTick).Run(afterCycle, stopWhen);
+        new VirtualSchedule(Robot, Connection.VirtualClock, _loopClock, Loop, ticks, aroundTick, tickCost).Run(afterCycle, stopWhen);
         Loop.Stop();
     }
 

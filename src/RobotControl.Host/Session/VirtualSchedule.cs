@@ -29,7 +29,9 @@ namespace RobotControl.Host.Session;
 /// (<see cref="ControlLoop.Overran"/>: k for a tick of k periods and a little more), the ticks due meanwhile are
 /// skipped, and the bus cycles on meanwhile, so that the safety supervisor sees the loop fall behind and trips as it would
 /// with real threads. A graph too slow for its rate fails on the virtual robot before it reaches a real one; a machine
-/// busy with other work does not (the thread's CPU time leaves out the time it waited for a CPU).
+/// busy with other work does not (the thread's CPU time leaves out the time it waited for a CPU), but a virtual machine
+/// whose virtual CPU is held by its host can (<see cref="VirtualTickCost.Measured"/>). With
+/// <see cref="VirtualTickCost.Free"/> ticks take no loop time, and a run is exactly reproducible anywhere.
 /// </para>
 /// </summary>
 public sealed class VirtualSchedule
@@ -42,6 +44,7 @@ public sealed class VirtualSchedule
     private readonly long _period;
     private readonly Action<ControlLoop, long> _tick;
     private long _nextTick;
+    private readonly bool _measured;
     private long _busyUntil;
 
     /// <summary>A schedule of <paramref name="ticks"/> loop ticks from now on <paramref name="busClock"/>.</summary>
@@ -51,7 +54,8 @@ public sealed class VirtualSchedule
     /// <param name="loop">The control loop, stepped once per tick.</param>
     /// <param name="ticks">Ticks to run.</param>
     /// <param name="aroundTick">Runs each tick instead of <see cref="ControlLoop.Step"/> (must call it once), given the tick's timestamp.</param>
-    public VirtualSchedule(IBusCycle robot, ManualTimeProvider busClock, ManualTimeProvider loopClock, ControlLoop loop, long ticks, Action<ControlLoop, long>? aroundTick = null)
+    /// <param name="tickCost">Whether a tick's CPU time counts against its period (<see cref="VirtualTickCost.Measured"/>) or ticks take no loop time (<see cref="VirtualTickCost.Free"/>: exactly reproducible).</param>
+    public VirtualSchedule(IBusCycle robot, ManualTimeProvider busClock, ManualTimeProvider loopClock, ControlLoop loop, long ticks, Action<ControlLoop, long>? aroundTick = null, VirtualTickCost tickCost = VirtualTickCost.Measured)
     {
         ArgumentNullException.ThrowIfNull(robot);
         ArgumentNullException.ThrowIfNull(busClock);
@@ -65,7 +69,13 @@ public sealed class VirtualSchedule
         _ticks = ticks;
         _period = loop.Period.Ticks;
         _tick = aroundTick ?? ((l, _) => l.Step());
-        if (ThreadCpuClock.Available)
+        if (!Enum.IsDefined(tickCost))
+        {
+            throw new ArgumentOutOfRangeException(nameof(tickCost), tickCost, "not a tick cost");
+        }
+
+        _measured = tickCost == VirtualTickCost.Measured;
+        if (_measured && ThreadCpuClock.Available)
         {
             loop.CostClock ??= ThreadCpuClock.NowNs; // the schedule's thread runs the ticks: their CPU time is their cost
         }
@@ -138,7 +148,7 @@ public sealed class VirtualSchedule
     private void Tick(long due)
     {
         _loopClock.SetTimestamp(due);
-        var measured = _loop.TickCount > 0 && _loop.CostClock is not null; // the first tick starts the graph (first-time costs)
+        var measured = _measured && _loop.TickCount > 0 && _loop.CostClock is not null; // the first tick starts the graph (first-time costs)
         _tick(_loop, due);
         if (!measured)
         {

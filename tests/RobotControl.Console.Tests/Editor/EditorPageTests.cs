@@ -1,3 +1,4 @@
+using RobotControl.Host.Session;
 using System.Text.Json;
 using System.Text.Json.Nodes;
 using System.Text.RegularExpressions;
@@ -196,7 +197,7 @@ public sealed class EditorPageTests(EditorFixture console)
     /// <summary>The report of <c>robotctl run --virtual</c> on a graph of the folder, without its wall-clock timing.</summary>
     private JsonElement Report(string graph)
     {
-        var report = HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(console.Graphs, graph), Duration = TimeSpan.FromSeconds(3) }, ConsoleFixture.Catalog());
+        var report = HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(console.Graphs, graph), Duration = TimeSpan.FromSeconds(3), TickCost = VirtualTickCost.Free }, ConsoleFixture.Catalog());
         var json = JsonNode.Parse(report.ToJson())!.AsObject();
         json.Remove("tick_us"); // wall-clock time of each tick: differs from run to run of the same graph
         return JsonSerializer.Deserialize<JsonElement>(json.ToJsonString());

@@ -1,3 +1,4 @@
+using RobotControl.Host.Session;
 using System.Globalization;
 using Microsoft.Extensions.Time.Testing;
 using RobotControl.Host.Harness;
@@ -103,7 +104,7 @@ public sealed class ReplaySessionTests(ReplaySessionTests.Recorded recorded) : I
         public Recorded()
         {
             Path = System.IO.Path.Combine(Directory.CreateTempSubdirectory("rc-replay-").FullName, "main.mcap");
-            HeadlessRun.Run(new RunOptions { GraphPath = System.IO.Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = Path } }, ConsoleFixture.Catalog());
+            HeadlessRun.Run(new RunOptions { GraphPath = System.IO.Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = Path }, TickCost = VirtualTickCost.Free }, ConsoleFixture.Catalog());
         }
 
         public string Path { get; }

@@ -1,3 +1,4 @@
+using RobotControl.Host.Session;
 using System.Globalization;
 using Microsoft.Extensions.Time.Testing;
 using Microsoft.Playwright;
@@ -19,7 +20,7 @@ public sealed class ReplayPageTests
     public async Task The_3d_view_shows_the_joint_values_the_recording_holds_at_time_t_and_the_slider_moves_them()
     {
         var file = Path.Combine(Directory.CreateTempSubdirectory("rc-replay-page-").FullName, "main.mcap");
-        HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = file } }, ConsoleFixture.Catalog());
+        HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = file }, TickCost = VirtualTickCost.Free }, ConsoleFixture.Catalog());
         var time = new FakeTimeProvider();
         using var replay = new ReplaySession(file, time);
         replay.Play(false);

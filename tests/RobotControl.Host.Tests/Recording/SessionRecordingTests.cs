@@ -1,3 +1,4 @@
+using RobotControl.Host.Session;
 using System.Globalization;
 using System.Text.Json;
 using RobotControl.Host.Harness;
@@ -89,6 +90,7 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
             {
                 GraphPath = Graphs.Path("teleop-lb.json"),
                 Duration = TimeSpan.FromSeconds(2),
+                TickCost = VirtualTickCost.Free,
                 Record = new RecordingOptions { Path = path, OpenStream = p => new FullDisk(File.Create(p), 256 << 10), Stopped = told.Add },
             },
             TestPlugins.Catalog());
@@ -156,7 +158,7 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
         var path = Path.Combine(Directory.CreateTempSubdirectory("rc-rec-").FullName, "alloc.mcap");
         long allocated = 0, measured = 0;
         HeadlessRun.RunVirtual(
-            new RunOptions { GraphPath = Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = path } },
+            new RunOptions { GraphPath = Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = path }, TickCost = VirtualTickCost.Free },
             TestPlugins.Catalog(),
             new VirtualRunHooks
             {
@@ -214,7 +216,7 @@ public sealed class SessionRecordingTests(SessionRecordingTests.MainJob job) : I
         {
             Path = System.IO.Path.Combine(Directory.CreateTempSubdirectory("rc-rec-").FullName, "main.mcap");
             Report = HeadlessRun.Run(
-                new RunOptions { GraphPath = Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(8), Record = new RecordingOptions { Path = Path } },
+                new RunOptions { GraphPath = Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(8), Record = new RecordingOptions { Path = Path }, TickCost = VirtualTickCost.Free },
                 TestPlugins.Catalog());
         }
 

@@ -1,3 +1,4 @@
+using RobotControl.Host.Session;
 using RobotControl.Bus.Protocol;
 using RobotControl.Definitions.Model;
 using RobotControl.Host.Harness;
@@ -51,7 +52,7 @@ internal sealed class SafetyRun
         var motors = new List<MotorEnd>();
         var lastForceAt = long.MinValue;
         var report = HeadlessRun.RunVirtual(
-            new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject), ReEngageAfter = reEngageAfter },
+            new RunOptions { GraphPath = graph ?? Graphs.Path("teleop-lb.json"), Duration = TimeSpan.FromSeconds(seconds), Inject = FaultInjection.Parse(inject), ReEngageAfter = reEngageAfter, TickCost = VirtualTickCost.Free },
             TestPlugins.Catalog(),
             new VirtualRunHooks
             {

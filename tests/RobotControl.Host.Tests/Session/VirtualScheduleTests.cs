@@ -119,6 +119,48 @@ public sealed class VirtualScheduleTests
         Assert.Equal(0, loop.Statistics.DeadlineMisses);
     }
 
+    /// <summary>A plug-in whose every tick costs 3 ms on <see cref="CostNs"/> (the loop's cost clock in these tests).</summary>
+    private sealed class ThreeMsTicks(List<string> log) : Plugin(PluginContext.Standalone("slow"))
+    {
+        public long CostNs { get; private set; }
+
+        public override void Tick(in TickContext context)
+        {
+            log.Add($"tick@{context.Timestamp}");
+            CostNs += 3_000_000;
+        }
+    }
+
+    [Theory]
+    [InlineData(VirtualTickCost.Measured)]
+    [InlineData(VirtualTickCost.Free)]
+    public void A_tick_s_cost_counts_against_its_period_when_measured_and_not_when_free(VirtualTickCost tickCost)
+    {
+        var busClock = new ManualTimeProvider();
+        var loopClock = new ManualTimeProvider();
+        var log = new List<string>();
+        var slow = new ThreeMsTicks(log);
+        var graph = new PluginGraph();
+        graph.Add(slow);
+        using var loop = new ControlLoop(graph.Compile(), loopClock, 1000) { CostClock = () => slow.CostNs };
+        new VirtualSchedule(new RecordingCycle(busClock, log, pollUs: 0), busClock, loopClock, loop, 4, tickCost: tickCost).Run();
+
+        var ticks = log.Where(l => l.StartsWith("tick@", StringComparison.Ordinal)).ToList();
+        if (tickCost == VirtualTickCost.Free)
+        {
+            // Every tick at its own instant, none missed: the run is the same on any machine.
+            Assert.Equal(["tick@10000", "tick@20000", "tick@30000", "tick@40000"], ticks);
+            Assert.Equal(0, loop.Statistics.DeadlineMisses);
+        }
+        else
+        {
+            // The first tick starts the graph (not measured); from the second on each keeps the loop busy 3 ms: the two
+            // instants due meanwhile are skipped: three measured ticks of three periods, three misses each.
+            Assert.Equal(["tick@10000", "tick@20000", "tick@50000", "tick@80000"], ticks);
+            Assert.Equal(9, loop.Statistics.DeadlineMisses);
+        }
+    }
+
     [Fact]
     public void Zero_ticks_runs_no_cycle()
     {

@@ -6,6 +6,7 @@ using RobotControl.Cli.Options;
 using RobotControl.Cli.Output;
 using RobotControl.Definitions.Loading;
 using RobotControl.Host.Harness;
+using RobotControl.Host.Session;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;
@@ -38,6 +39,8 @@ internal sealed class RunCommand : ICliCommand
         var rtPriority = CliOption.Number("--rt-priority", "Real time: run the bus and loop threads with SCHED_FIFO at this priority (1..99; 0: normal scheduling)", 0, 99, 0);
         var cpu = CliOption.OptionalNumber<int>("--cpu", "Real time: pin the bus and loop threads to this CPU", 0, 1023);
         var record = RecordOptions.Create();
+        var tickCost = new Option<string>("--tick-cost") { Description = "With --virtual: measured (default: a tick's CPU time counts against its period, so a graph too slow for its rate misses) or free (ticks take no loop time: the run is exactly reproducible on any machine)", DefaultValueFactory = _ => "measured" };
+        tickCost.AcceptOnlyFromAmong("measured", "free");
         var continueOnFault = new Option<bool>("--continue-on-fault") { Description = "Keep commanding when the robot faults (default: stop, motors off, exit 1)" };
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
         command.Arguments.Add(graph);
@@ -50,6 +53,7 @@ internal sealed class RunCommand : ICliCommand
         command.Options.Add(set);
         command.Options.Add(transport);
         command.Options.Add(continueOnFault);
+        command.Options.Add(tickCost);
         command.Options.Add(rtPriority);
         command.Options.Add(cpu);
         record.AddTo(command);
@@ -62,7 +66,7 @@ internal sealed class RunCommand : ICliCommand
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
             parse.GetValue(set) ?? [],
-            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)) { Record = record.Value(parse) },
+            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)) { Record = record.Value(parse), TickCost = parse.GetValue(tickCost) == "free" ? VirtualTickCost.Free : VirtualTickCost.Measured },
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -93,6 +97,7 @@ internal sealed class RunCommand : ICliCommand
                 ContinueOnFault = extras.ContinueOnFault,
                 Threads = extras.Threads(),
                 Record = extras.Record?.Options(error),
+                TickCost = extras.TickCostFor(isVirtual),
             };
             RunPreflight.Check(options, catalog);
         }
@@ -103,7 +108,7 @@ internal sealed class RunCommand : ICliCommand
         }
 
         var c = CultureInfo.InvariantCulture;
-        output.WriteLine(string.Create(c, $"run {Path.GetFileName(graphPath)}: {(isVirtual ? "virtual robot (firmware in the loop), virtual clock" : "real time")}, {options.Duration.TotalSeconds:0.###} s, faults: {options.Inject}"));
+        output.WriteLine(string.Create(c, $"run {Path.GetFileName(graphPath)}: {(!isVirtual ? "real time" : options.TickCost == VirtualTickCost.Free ? "virtual robot (firmware in the loop), virtual clock, ticks take no loop time" : "virtual robot (firmware in the loop), virtual clock")}, {options.Duration.TotalSeconds:0.###} s, faults: {options.Inject}"));
         RunReport result;
         using var signals = new StopSignals(error);
         using var keys = ReferenceEquals(output, Console.Out) ? OperatorKeys.FromConsole(error) : null; // not when run in-process (tests)

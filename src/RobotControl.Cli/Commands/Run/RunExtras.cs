@@ -15,6 +15,16 @@ internal sealed record RunExtras(string? Transport, bool ContinueOnFault, int Rt
     /// <summary>The <c>--record</c> options (null: no recording).</summary>
     public RecordRequest? Record { get; init; }
 
+    /// <summary>The <c>--tick-cost</c> value.</summary>
+    public VirtualTickCost TickCost { get; init; } = VirtualTickCost.Measured;
+
+    /// <summary>The tick cost of a run that is virtual or not (<paramref name="isVirtual"/>).</summary>
+    /// <exception cref="FormatException">One line: <c>--tick-cost free</c> on a real-time run, whose ticks take the wall clock's time.</exception>
+    public VirtualTickCost TickCostFor(bool isVirtual) =>
+        isVirtual || TickCost == VirtualTickCost.Measured
+            ? TickCost
+            : throw new FormatException("--tick-cost free applies to --virtual runs: a real-time run's ticks take the wall clock's time");
+
     /// <summary>The real-time threads' scheduling.</summary>
     /// <exception cref="FormatException">One line naming the option out of range.</exception>
     public RealtimeThreads Threads()

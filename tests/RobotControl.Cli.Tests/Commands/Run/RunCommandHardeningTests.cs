@@ -70,10 +70,20 @@ public sealed class RunCommandHardeningTests : IDisposable
     [Fact]
     public void A_stall_is_counted_in_the_summary_beside_the_deadline_misses_and_says_what_each_counts()
     {
-        var (code, output, error) = Cli.Run("run", Graph, "--virtual", "--duration", "1500ms", "--inject", "stall=600ms@1s", "--continue-on-fault");
+        // Ticks take no loop time (--tick-cost free): the stall is the run's only delay, whatever the machine's load.
+        var (code, output, error) = Cli.Run("run", Graph, "--virtual", "--tick-cost", "free", "--duration", "1500ms", "--inject", "stall=600ms@1s", "--continue-on-fault");
 
         Assert.True(code is 0 or 1, error);
+        Assert.Contains("virtual clock, ticks take no loop time", output, StringComparison.Ordinal);
         Assert.Matches(@"summary: 1500 ticks in [\d.]+ s of loop time, 0 deadline misses \(ticks started late\); 1 silence trip\(s\), longest 60\d\.\d ms \(host_stall\)", output);
+    }
+
+    [Fact]
+    public void Free_ticks_on_a_real_time_run_are_one_line_naming_the_option()
+    {
+        var result = Cli.Run("run", Graph, "--transport", "serial:/dev/null", "--tick-cost", "free", "--duration", "10ms");
+
+        Cli.AssertRefused(result, "--tick-cost free applies to --virtual runs");
     }
 
     [Fact]
