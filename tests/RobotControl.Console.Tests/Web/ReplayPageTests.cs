@@ -42,6 +42,48 @@ public sealed class ReplayPageTests
         Assert.Equal(0.5, replay.PositionSeconds, 9);
     }
 
+    [Fact]
+    public async Task Moving_the_replay_back_starts_the_plot_again_from_the_new_position_instead_of_mixing_two_timelines()
+    {
+        var file = Path.Combine(Directory.CreateTempSubdirectory("rc-replay-plot-").FullName, "main.mcap");
+        HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = file }, TickCost = VirtualTickCost.Free }, ConsoleFixture.Catalog());
+        var time = new FakeTimeProvider();
+        using var replay = new ReplaySession(file, time);
+        replay.Seek(1.0);
+        await using var server = await ConsoleServer.StartAsync(replay, BindAddress.Parse("127.0.0.1:0"), null);
+        await using var chromium = await HeadlessChromium.LaunchAsync();
+        var page = await (await chromium.Browser.NewContextAsync(new() { AcceptDownloads = true })).NewPageAsync();
+        await page.GotoAsync(ConsoleFixture.PageUrl(server, "plots"));
+        await Assertions.Expect(page.GetByTestId("signal-picker").Locator("option").First).ToBeAttachedAsync(new() { Timeout = 30_000 });
+        replay.Play(true);
+        for (var step = 0; step < 10; step++)
+        {
+            time.Advance(TimeSpan.FromMilliseconds(50)); // 1.0 s to 1.5 s of the recording
+            replay.Pump();
+            await page.WaitForTimeoutAsync(100);
+        }
+
+        await page.WaitForFunctionAsync("() => parseInt(document.querySelector('[data-testid=plot-samples]').textContent) > 300", null, new() { Timeout = 30_000 });
+        var before = await PlottedTimes(page);
+        Assert.True(before[^1] >= 1.45, $"the plot reached {before[^1]} s");
+
+        replay.Seek(0.5);
+        replay.Pump();
+        await page.WaitForFunctionAsync("() => parseInt(document.querySelector('[data-testid=plot-samples]').textContent) < 50", null, new() { Timeout = 30_000 });
+        var after = await PlottedTimes(page);
+        Assert.NotEmpty(after);
+        Assert.All(after, t => Assert.InRange(t, 0.45, 0.5 + 1e-9));
+        Assert.Equal(after.Order(), after);
+    }
+
+    /// <summary>The plot's rows as its Export CSV gives them: the time column.</summary>
+    private static async Task<IReadOnlyList<double>> PlottedTimes(IPage page)
+    {
+        var download = await page.RunAndWaitForDownloadAsync(() => page.GetByTestId("export-csv").ClickAsync());
+        var lines = await File.ReadAllLinesAsync((await download.PathAsync())!);
+        return [.. lines.Skip(1).Where(l => l.Length > 0).Select(l => double.Parse(l.Split(',')[0], CultureInfo.InvariantCulture))];
+    }
+
     /// <summary>The recording's value of <paramref name="signal"/> at the last row at or before <paramref name="t"/>, as the page prints it (6 decimals).</summary>
     private static string Expected(string file, string signal, double t)
     {

@@ -29,6 +29,12 @@ export function plotsPage(root: HTMLElement): () => void {
 
   const stream = new SignalStream((names, frame: Frame) => {
     if (names.join() !== chosen.join()) return;
+    // Rows from before the last one plotted start a new timeline (the replay was moved back, or the server restarted
+    // and its session began again): the old rows go, so the plot never mixes two timelines.
+    if (frame.t.length > 0 && times.length > 0 && frame.t[0] < times[times.length - 1]) {
+      times = [];
+      series = series.map(() => []);
+    }
     times.push(...frame.t);
     frame.v.forEach((v, i) => series[i]?.push(...v));
     trim();
