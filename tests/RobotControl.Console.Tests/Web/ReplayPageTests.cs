@@ -19,8 +19,7 @@ public sealed class ReplayPageTests
     [Fact]
     public async Task The_3d_view_shows_the_joint_values_the_recording_holds_at_time_t_and_the_slider_moves_them()
     {
-        var file = Path.Combine(Directory.CreateTempSubdirectory("rc-replay-page-").FullName, "main.mcap");
-        HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = file }, TickCost = VirtualTickCost.Free }, ConsoleFixture.Catalog());
+        var file = RecordMainJob();
         var time = new FakeTimeProvider();
         using var replay = new ReplaySession(file, time);
         replay.Play(false);
@@ -45,8 +44,7 @@ public sealed class ReplayPageTests
     [Fact]
     public async Task Moving_the_replay_back_starts_the_plot_again_from_the_new_position_instead_of_mixing_two_timelines()
     {
-        var file = Path.Combine(Directory.CreateTempSubdirectory("rc-replay-plot-").FullName, "main.mcap");
-        HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = file }, TickCost = VirtualTickCost.Free }, ConsoleFixture.Catalog());
+        var file = RecordMainJob();
         var time = new FakeTimeProvider();
         using var replay = new ReplaySession(file, time);
         replay.Seek(1.0);
@@ -74,6 +72,14 @@ public sealed class ReplayPageTests
         Assert.NotEmpty(after);
         Assert.All(after, t => Assert.InRange(t, 0.45, 0.5 + 1e-9));
         Assert.Equal(after.Order(), after);
+    }
+
+    /// <summary>Two seconds of the main job recorded (ticks free: the same file on any machine); the file's path.</summary>
+    private static string RecordMainJob()
+    {
+        var file = Path.Combine(Directory.CreateTempSubdirectory("rc-replay-page-").FullName, "main.mcap");
+        HeadlessRun.Run(new RunOptions { GraphPath = Path.Combine(ConsoleFixture.RepoRoot, "graphs", "teleop-lb.json"), Duration = TimeSpan.FromSeconds(2), Record = new RecordingOptions { Path = file }, TickCost = VirtualTickCost.Free }, ConsoleFixture.Catalog());
+        return file;
     }
 
     /// <summary>The plot's rows as its Export CSV gives them: the time column.</summary>
