@@ -13,13 +13,13 @@ namespace RobotControl.Bench.Recording;
 /// <summary>
 /// <c>recording [--graph graphs/teleop-lb.json] [--duration 20s] [--out docs/perf/recording.md]</c>: what recording a
 /// session (MCAP, <c>--record</c>) costs. (1) The loop's tick (Stopwatch around the whole step, the tick observers
-/// and so the recorder's tap included) and its allocations, without and with recording, alternating in one process
-/// on the main job. (2) File size per minute of loop time at decimation 1 and 10. (3) The writer's throughput: rows
+/// and so the recorder's tap included) and its allocations, without and with recording, side by side in lockstep on
+/// two threads of one process, on the main job. (2) File size per minute of loop time at decimation 1 and 10. (3) The writer's throughput: rows
 /// of the main job's layout encoded and written (JSON, chunks, CRCs) on one thread, messages per second.
 /// </summary>
 internal sealed class RecordingBench : IBenchCommand
 {
-    /// <summary>Pairs of runs, without then with recording.</summary>
+    /// <summary>Rounds, each a pair of runs side by side: without and with recording.</summary>
     private const int Rounds = 5;
 
     public string Name => "recording";
@@ -39,10 +39,9 @@ internal sealed class RecordingBench : IBenchCommand
         var rows = new List<(string Name, TickSample Ticks, RecordingSummary? Recording)>();
         for (var round = 0; round < Rounds; round++)
         {
-            rows.Add(("without recording", Measure(graph, duration, catalog, null), null));
-            var file = Path.Combine(dir, $"with-{round}.mcap");
-            var with = Measure(graph, duration, catalog, new RecordingOptions { Path = file });
-            rows.Add(("with recording (decimate 1)", with, with.Recording));
+            var pair = SideBySide(graph, duration, catalog, new RecordingOptions { Path = Path.Combine(dir, $"with-{round}.mcap") });
+            rows.Add(("without recording", pair.Without, null));
+            rows.Add(("with recording (decimate 1)", pair.With, pair.With.Recording));
         }
 
         var decimated = HeadlessRun.Run(new RunOptions { GraphPath = graph, Duration = duration, Record = new RecordingOptions { Path = Path.Combine(dir, "decimate-10.mcap"), Decimate = 10 } }, catalog).Recording!;
@@ -60,7 +59,7 @@ internal sealed class RecordingBench : IBenchCommand
         md.AppendLine();
         md.AppendLine(c, $"Command: `dotnet run -c Release --project bench/RobotControl.Bench -- recording --graph {graph} --duration {duration.TotalSeconds:0.###}s --out {outPath}`");
         md.AppendLine();
-        md.AppendLine(c, $"Measured {DateTime.UtcNow:yyyy-MM-dd HH:mm} UTC on {Environment.ProcessorCount} cores shared with other work ({Environment.OSVersion}, .NET {Environment.Version}). The main job (two-arm teleoperation on the virtual robot, firmware in the loop, virtual clock, 1 kHz). Runs alternate without and with recording in one process after a warm-up run.");
+        md.AppendLine(c, $"Measured {DateTime.UtcNow:yyyy-MM-dd HH:mm} UTC on {Environment.ProcessorCount} cores shared with other work ({Environment.OSVersion}, .NET {Environment.Version}). The main job (two-arm teleoperation on the virtual robot, firmware in the loop, virtual clock, 1 kHz). Each round runs the two side by side, on two threads in lockstep (each tick waits for the other run's same tick), after a warm-up run; ticks take no loop time (`VirtualTickCost.Free`), so the two runs stay the same run.");
         md.AppendLine();
         md.AppendLine("## Loop tick: the whole step (graph, robot node and the tick observers, so the recorder's tap), thread CPU time");
         md.AppendLine();
@@ -101,15 +100,41 @@ internal sealed class RecordingBench : IBenchCommand
         return 0;
     }
 
-    private static TickSample Measure(string graph, TimeSpan duration, Runtime.Discovery.PluginCatalog catalog, RecordingOptions? record)
+    /// <summary>
+    /// The main job twice at once, on two threads in lockstep (each tick waits for the other run's same tick): without
+    /// recording, and with it. Both see the same moments of the machine (its other work, its host's stalls), so their
+    /// ratio is the recording's cost rather than the time of day. Ticks take no loop time (the runs stay identical).
+    /// </summary>
+    private static (TickSample Without, TickSample With) SideBySide(string graph, TimeSpan duration, Runtime.Discovery.PluginCatalog catalog, RecordingOptions record)
+    {
+        using var lockstep = new Barrier(2);
+        TickSample Run(RecordingOptions? r)
+        {
+            try
+            {
+                return Measure(graph, duration, catalog, r, lockstep);
+            }
+            finally
+            {
+                lockstep.RemoveParticipant(); // a run that ends first lets the other go on alone
+            }
+        }
+
+        var without = Task.Factory.StartNew(() => Run(null), TaskCreationOptions.LongRunning);
+        var with = Task.Factory.StartNew(() => Run(record), TaskCreationOptions.LongRunning);
+        return (without.GetAwaiter().GetResult(), with.GetAwaiter().GetResult());
+    }
+
+    private static TickSample Measure(string graph, TimeSpan duration, Runtime.Discovery.PluginCatalog catalog, RecordingOptions? record, Barrier lockstep)
     {
         var ticks = new List<double>((int)(duration.TotalSeconds * 1000) + 16);
         var cpu = new List<double>(ticks.Capacity);
         long allocated = 0;
-        var report = HeadlessRun.RunVirtual(new RunOptions { GraphPath = graph, Duration = duration, Record = record }, catalog, new VirtualRunHooks
+        var report = HeadlessRun.RunVirtual(new RunOptions { GraphPath = graph, Duration = duration, Record = record, TickCost = VirtualTickCost.Free }, catalog, new VirtualRunHooks
         {
             AroundTick = (loop, _) =>
             {
+                lockstep.SignalAndWait();
                 var bytes = GC.GetAllocatedBytesForCurrentThread();
                 var cpuStart = ThreadCpuClock.NowNs();
                 var start = Stopwatch.GetTimestamp();

@@ -65,7 +65,9 @@ public sealed partial class SafetySupervisor
             Trip(SafetyCheck.PluginFault, fault.PlugIn, 0, 0, string.Empty, now, TripSource, fault.What);
         }
 
-        _motorChecks.Check(driven: _robot.State == RobotState.Enabled, homed: Level is RunLevel.PedalUp or RunLevel.PedalDown, now);
+        // Driven: the motors are on and no trip has switched them off. Once one has, the goals no longer drive the
+        // arms: a tracking error from then on (while the modules' torque-off is still being read back) is not a fault.
+        _motorChecks.Check(driven: _robot.State == RobotState.Enabled && !_torqueOffTaken, homed: Level is RunLevel.PedalUp or RunLevel.PedalDown, now);
     }
 
     /// <summary>
