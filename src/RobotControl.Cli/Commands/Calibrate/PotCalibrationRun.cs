@@ -124,7 +124,7 @@ internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient cli
         var entry = recorded.PotCalibration![m.FullName];
         entry.WorstDeg = Math.Round(worst, 3);
         entry.Verified = worst <= bound;
-        setup.Unit.Save(setup.UnitPath, DateTimeOffset.UtcNow);
+        setup.Unit.Save(setup.UnitPath, client.Time.GetUtcNow());
         if (!entry.Verified)
         {
             throw new IOException(string.Create(CultureInfo.InvariantCulture, $"{m.FullName}: its pot and its Hall position disagree by up to {worst:F2} deg in the verification sweep (bound {bound} deg): a slipping pot or coupling, or the arm was not in its fixture pose at the start; motors off; check them and run calibrate pots --redo --joints {m.FullName}"));
@@ -140,7 +140,7 @@ internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient cli
             recorded.Parameters[UnitFile.Key(p.Field, p.Motor)] = p.Value;
         }
 
-        var now = DateTimeOffset.UtcNow;
+        var now = client.Time.GetUtcNow();
         recorded.PotCalibration ??= [];
         foreach (var (name, samples) in motors)
         {

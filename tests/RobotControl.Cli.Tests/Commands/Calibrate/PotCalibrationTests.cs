@@ -80,7 +80,7 @@ public sealed partial class PotCalibrationTests(ITestOutputHelper log) : IDispos
     }
 
     [Fact]
-    public void A_stop_mid_sweep_turns_the_motors_off_and_says_so_in_one_line_and_bad_input_is_one_line()
+    public void Nothing_moves_before_the_fixture_is_confirmed_a_stop_mid_sweep_turns_the_motors_off_in_one_line_and_bad_input_is_one_line()
     {
         var missing = Cli.Run("calibrate", "pots", Robot, "--transport", "serial:/dev/null", "--unit", "lb-none", "--units", _units);
         Cli.AssertRefused(missing, "no unit file");
@@ -91,8 +91,13 @@ public sealed partial class PotCalibrationTests(ITestOutputHelper log) : IDispos
         var unknown = Cli.Run("calibrate", "pots", Robot, "--transport", transport, "--unit", "lb-0102", "--units", _units, "--joints", "right.knee");
         Cli.AssertRefused(unknown, "--joints 'right.knee': no motor is named right.knee");
 
-        using (var calibrate = Calibrate(transport, "lb-0102", "--joints", "right.elbow"))
+        using (var calibrate = new RunProcess(typing: true, "calibrate", "pots", Robot, "--transport", transport, "--unit", "lb-0102", "--units", _units, "--margin-ms", "50", "--joints", "right.elbow"))
         {
+            // Interactively, nothing moves until the operator says the arm is in its fixture pose.
+            calibrate.WaitFor("module 2 (right upper arm): put the arm in its fixture pose (right.elbow 75.0 deg: every joint at mid-range, the jaw half open), keep clear of it, then press Enter", Patience);
+            Thread.Sleep(500);
+            Assert.DoesNotContain("sweeping", calibrate.Output, StringComparison.Ordinal);
+            calibrate.Type(string.Empty);
             calibrate.WaitFor("right.elbow: sweeping its range", Patience);
             Thread.Sleep(1000);
             calibrate.Signal("INT");
