@@ -11,8 +11,9 @@ namespace RobotControl.Robot.Tests.Calibration;
 /// <summary>
 /// <see cref="PotCalibrator"/>'s steps on the in-process virtual robot (the real firmware, simulated time) with unit
 /// variation: the forearm's two pots (tool roll, jaw) measured, fitted, stored and verified. Checked against the
-/// simulator's true angles (<see cref="VirtualAxis.OutputAngleRad"/>), and the verification sweep must find a table
-/// that does not fit (the robot file's design curve) degrees off.
+/// simulator's true angles (<see cref="VirtualAxis.OutputAngleRad"/>), at the fixture pose and with each axis turned
+/// by hand across its range and homed again, and the verification sweep must find a table that does not fit (the
+/// robot file's design curve) degrees off.
 /// </summary>
 public sealed class PotCalibratorTests(ITestOutputHelper output)
 {
@@ -55,6 +56,24 @@ public sealed class PotCalibratorTests(ITestOutputHelper output)
         }
 
         Assert.True(designWorst > 5, $"the design curves only {designWorst:F2} deg off in the sweeps"); // the tool roll: 14.6 deg at seed 3
+
+        // Homed from the fitted table anywhere in the range (the axis turned by hand with its module off, then homed):
+        // within half a degree of the true angle, where the design curve is degrees off.
+        foreach (var i in Enumerable.Range(0, plan.Motors.Count))
+        {
+            var m = plan.Motors[i];
+            var axis = lb.Sim.Axes.Single(a => a.Config.FullName == m.FullName);
+            foreach (var fraction in new[] { 0.05, 0.3, 0.7, 0.95 })
+            {
+                var angle = m.OutputMinRad + (fraction * (m.OutputMaxRad - m.OutputMinRad));
+                lb.Sim.TurnWhileOff(axis, angle);
+                Assert.True(client.Write(module.Id, ControlTable.Firmware["home_request"].At(0), [(byte)(1 << m.Channel)]).Succeeded);
+                var homed = m.ToRadians(reader.Read(module.Id, "present_position", m.Channel));
+                var design = m.ToRadians(PotCalibrationTable.For(m).PositionAt((int)reader.Read(module.Id, "pot_raw", m.Channel)));
+                output.WriteLine($"{m.FullName} at {angle / Deg:F1} deg: homed {(homed - angle) / Deg:F2} deg off, the design curve {(design - angle) / Deg:F2} deg");
+                Assert.True(Math.Abs(homed - angle) < 0.5 * Deg, $"{m.FullName} at {angle / Deg:F1} deg: homed {(homed - angle) / Deg:F2} deg off");
+            }
+        }
 
         var torque = new byte[2];
         Assert.True(client.Read(module.Id, ControlTable.Firmware["torque_enable"].At(0), torque).Succeeded);
