@@ -18,11 +18,14 @@ public sealed record PotCalibrationOptions
     /// <summary>How long a sweep waits at a way point for the motors to get within <see cref="ArrivedDeg"/>.</summary>
     public TimeSpan SettleTime { get; init; } = TimeSpan.FromSeconds(1);
 
-    /// <summary>Bus holds (a late host) a module may report in one calibration before it stops: each is acknowledged and the sweep goes on.</summary>
-    public int MaxHolds { get; init; } = 50;
+    /// <summary>
+    /// A move (one leg of a sweep) must get through within this many times its length, plus <see cref="SettleTime"/>;
+    /// bus holds (a late host: each holds the motors for a moment) that keep it longer stop the calibration.
+    /// </summary>
+    public double LegPatience { get; init; } = 3;
 
     /// <summary>Times the bus watchdog's second stage may turn a module's motors off (a stalled host) in one calibration before it stops: each is said, acknowledged and the motors armed again.</summary>
-    public int MaxWatchdogStops { get; init; } = 3;
+    public int MaxWatchdogStops { get; init; } = 5;
 
     /// <summary>Consecutive samples the verification averages (the pot's noise is not a disagreement).</summary>
     public int VerifyWindow { get; init; } = 5;

@@ -221,10 +221,17 @@ public sealed class PotCalibrator
         var begun = time.GetTimestamp();
         var behind = new long[motors.Count];
         var goals = new byte[4 * (motors.Max(m => m.Channel) + 1)];
+        var holds = Holds;
         while (true)
         {
             _stop.ThrowIfCancellationRequested();
-            var t = duration <= 0 ? 1 : Math.Min(1, time.GetElapsedTime(begun).TotalSeconds / duration);
+            var elapsed = time.GetElapsedTime(begun).TotalSeconds;
+            if (elapsed > (_options.LegPatience * duration) + _options.SettleTime.TotalSeconds)
+            {
+                throw new IOException(string.Create(CultureInfo.InvariantCulture, $"{What}: a {duration:F1} s move did not get through in {elapsed:F0} s ({Holds - holds} bus holds: this host was late with a frame by more than bus_watchdog): motors off; run the calibration on a less loaded host or a faster link"));
+            }
+
+            var t = duration <= 0 ? 1 : Math.Min(1, elapsed / duration);
             for (var i = 0; i < motors.Count; i++)
             {
                 var goal = motors[i].ToCounts(from[i] + ((to[i] - from[i]) * t)) - Offsets[i];
@@ -243,7 +250,13 @@ public sealed class PotCalibrator
                 continue; // the bus watchdog stopped the motors and they are armed again; the goals go again
             }
 
-            Require(taken, "taking a goal");
+            // A goal's reply lost on a loaded link is harmless (the poll just read the module; the next goal goes
+            // anyway); a refusal is not.
+            if (taken.Outcome == ReplyOutcome.Ok)
+            {
+                Require(taken, "taking a goal");
+            }
+
             Check(behind, time.GetTimestamp());
             sample();
             if (t >= 1 && (Arrived(goals) || time.GetElapsedTime(begun).TotalSeconds > duration + _options.SettleTime.TotalSeconds))
@@ -255,7 +268,9 @@ public sealed class PotCalibrator
 
     /// <summary>
     /// A bus hold (the watchdog's first stage: this host was late with a frame) with nothing else latched than what a
-    /// hold's acknowledgement may clear (over-current, position lost) is acknowledged, as the robot does, and counted (<see cref="Holds"/>); too many stop the calibration.
+    /// hold's acknowledgement may clear (over-current, position lost) is acknowledged, as the robot does, and counted
+    /// (<see cref="Holds"/>); a move they keep from getting through in <see cref="PotCalibrationOptions.LegPatience"/>
+    /// times its length stops the calibration.
     /// </summary>
     private bool AcknowledgedHold()
     {
@@ -266,11 +281,6 @@ public sealed class PotCalibrator
         }
 
         Holds++;
-        if (Holds > _options.MaxHolds)
-        {
-            throw new IOException($"{What}: its bus watchdog held the motors {Holds} times (this host was late with a frame by more than bus_watchdog): motors off; run the calibration on a less loaded host or a faster link");
-        }
-
         Require(_client.Write(_id, Table["hardware_error_status"].At(0), [0], BusRobot.InsistingRetries), "acknowledging its bus hold");
         return true;
     }
