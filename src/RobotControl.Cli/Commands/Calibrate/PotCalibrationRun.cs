@@ -52,7 +52,7 @@ internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient cli
             }
         }
 
-        output.WriteLine($"unit {setup.Unit.Unit}: {calibrated} pots calibrated and verified, motors off (read back); recorded in {setup.UnitPath}");
+        output.WriteLine($"unit {setup.Unit.Unit}: {Count(calibrated, "pot")} calibrated and verified, motors off (read back); recorded in {setup.UnitPath}");
         return 0;
     }
 
@@ -86,7 +86,7 @@ internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient cli
             }
 
             Record(recorded, calibrator.Store(tables), pending.Select(i => (plan.Motors[i].FullName, samples[i])));
-            output.WriteLine($"{calibrator.What}: {tables.Count} tables written into its FRAM and read back, motors homed from them; recorded in {setup.UnitPath}");
+            output.WriteLine($"{calibrator.What}: {Count(tables.Count, "table")} written into its FRAM and read back, motors homed from them; recorded in {setup.UnitPath}");
             foreach (var i in pending)
             {
                 Verify(calibrator, plan.Motors[i], recorded, i, tables[i]);
@@ -94,7 +94,7 @@ internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient cli
 
             if (calibrator.Holds > 0)
             {
-                output.WriteLine($"{calibrator.What}: {calibrator.Holds} bus holds acknowledged (this host was late with a frame by more than bus_watchdog)");
+                output.WriteLine($"{calibrator.What}: {Count(calibrator.Holds, "bus hold")} acknowledged (this host was late with a frame by more than bus_watchdog)");
             }
         }
         catch (OperationCanceledException)
@@ -168,6 +168,8 @@ internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient cli
             throw new IOException($"stopped before module {plan.Module.Id} ({plan.Module.Name}) was confirmed in its fixture pose (no more input); run calibrate pots again to continue");
         }
     }
+
+    private static string Count(int n, string what) => n == 1 ? $"1 {what}" : $"{n} {what}s";
 
     private static string Deg(MotorConfig m, long counts) => string.Create(CultureInfo.InvariantCulture, $"{m.ToRadians(counts) * 180 / Math.PI:F1}");
 }

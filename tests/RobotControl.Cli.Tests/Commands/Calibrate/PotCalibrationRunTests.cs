@@ -47,7 +47,7 @@ public sealed class PotCalibrationRunTests : IDisposable
         var again = strict with { Unit = UnitFile.Load(path)!, Options = new PotCalibrationOptions() };
         Assert.Equal(0, new PotCalibrationRun(again, client, second, CancellationToken.None).Run());
         Assert.Contains("right.elbow: verified, pot and Hall position agree within ", second.ToString(), StringComparison.Ordinal);
-        Assert.Contains("unit lb-0201: 1 pots calibrated and verified", second.ToString(), StringComparison.Ordinal);
+        Assert.Contains("unit lb-0201: 1 pot calibrated and verified", second.ToString(), StringComparison.Ordinal);
         Assert.True(UnitFile.Load(path)!.Module(2)!.PotCalibration!["right.elbow"].Verified);
     }
 }
