@@ -23,7 +23,7 @@ public sealed class RobotMotor
     private int _pwm;
     private int _torque = -1;
     private int _errors = -1;
-    private readonly PotCalibrationTable _potCalibration;
+    private PotCalibrationTable _potCalibration;
 
     internal RobotMotor(MotorConfig config, RobotController controller, int index)
     {
@@ -140,8 +140,8 @@ public sealed class RobotMotor
     }
 
     /// <summary>
-    /// The position the joint pot reads, output radians, through the calibration the robot file gives this motor
-    /// (the one its module holds); NaN before the first pot poll (<see cref="BusRobotOptions.PotPollCycles"/>) or
+    /// The position the joint pot reads, output radians, through the calibration its module holds as homing last read it
+    /// (a unit's own after <c>robotctl calibrate pots</c>; the robot file's design curve before homing); NaN before the first pot poll (<see cref="BusRobotOptions.PotPollCycles"/>) or
     /// without a pot calibration.
     /// </summary>
     public double PotPositionRad => Volatile.Read(ref _potPosition);
@@ -151,6 +151,9 @@ public sealed class RobotMotor
     /// pot/encoder check compares readings of one instant, not a pot reading a poll old against a moving encoder.
     /// </summary>
     public double PositionAtPotRad => Volatile.Read(ref _positionAtPot);
+
+    /// <summary>The pot calibration its module holds (homing reads it there): the pot/encoder check uses the module's own table.</summary>
+    internal void UsePotCalibration(PotCalibrationTable table) => _potCalibration = table;
 
     internal void PublishPot(int raw)
     {

@@ -1,3 +1,4 @@
+using System.Globalization;
 using RobotControl.Definitions.Model;
 using RobotControl.Host.Harness;
 using RobotControl.Simulation;
@@ -7,14 +8,15 @@ namespace RobotControl.Cli.Commands.Bus;
 /// <summary>
 /// What a lab does to a box of boards, typed on <c>bus-sim --factory</c>'s standard input one line at a time:
 /// <c>connect</c> (the next module still in the box), <c>connect &lt;module&gt;</c>, <c>disconnect &lt;module&gt;</c>,
-/// <c>power-cycle &lt;module&gt;</c>, <c>status</c>. A module is named as in the robot file (<c>arm.location</c>, its
+/// <c>power-cycle &lt;module&gt;</c>, <c>status</c>, <c>truth</c> (every axis's true output angle, what a calibration
+/// is checked against). A module is named as in the robot file (<c>arm.location</c>, its
 /// name or its ID there). Each line is handed to the serving thread (<see cref="VirtualRobot.Post"/>), which answers
 /// with one line.
 /// </summary>
 internal static class BusSimControl
 {
     /// <summary>The commands, for the start-up line and refusals.</summary>
-    public const string Syntax = "connect [<module>] | disconnect <module> | power-cycle <module> | status";
+    public const string Syntax = "connect [<module>] | disconnect <module> | power-cycle <module> | status | truth";
 
     /// <summary>Reads <paramref name="input"/> on a background thread until it ends, posting each line to <paramref name="sim"/>.</summary>
     public static void Listen(VirtualRobot sim, TextReader input, TextWriter output)
@@ -48,6 +50,7 @@ internal static class BusSimControl
                 ("disconnect", _) when argument is not null => Unplugged(sim, Resolve(sim, argument, verb)),
                 ("power-cycle", _) when argument is not null => PowerCycled(sim, Resolve(sim, argument, verb)),
                 ("status", null) => string.Join("; ", sim.Definition.Modules.Modules.Select(m => State(sim, m))),
+                ("truth", null) => "truth: " + string.Join("; ", sim.Axes.Select(a => string.Create(CultureInfo.InvariantCulture, $"{a.Config.FullName} {a.OutputAngleRad * 180 / Math.PI:F3} deg"))),
                 _ => $"'{line.Trim()}': unknown command (known: {Syntax})",
             });
         }

@@ -62,16 +62,24 @@ internal sealed class DiscoverCommand : ICliCommand
                     _ = LatchedFaults.Clear(session.Robot, output);
                 }
 
-                var mismatches = session.Robot.CheckParameters();
+                var name = parse.GetValue(unit);
+                var path = name is null ? null : UnitFile.PathOf(parse.GetValue(units)?.FullName ?? CommissionCommand.DefaultUnitsDirectory, name);
+                var recorded = path is null ? null : UnitFile.Load(path) ?? throw new ArgumentException($"--unit {name}: no unit file {path} (robotctl commission writes it)");
+                var differ = session.Robot.CheckParameters();
+                var calibrated = recorded is null ? [] : UnitCheck.Calibrated(differ, recorded);
+                var mismatches = differ.Except(calibrated).ToList();
                 foreach (var m in mismatches)
                 {
                     output.WriteLine($"PARAM    {m}");
                 }
 
-                if (parse.GetValue(unit) is { } name)
+                if (calibrated.Count > 0)
                 {
-                    var path = UnitFile.PathOf(parse.GetValue(units)?.FullName ?? CommissionCommand.DefaultUnitsDirectory, name);
-                    var recorded = UnitFile.Load(path) ?? throw new ArgumentException($"--unit {name}: no unit file {path} (robotctl commission writes it)");
+                    output.WriteLine($"POTCAL   {calibrated.Count} pot_cal values are unit {name}'s calibrated pot tables, not the robot file's design curves (as recorded)");
+                }
+
+                if (recorded is not null)
+                {
                     var differences = UnitCheck.Differences(session.Client, recorded);
                     foreach (var d in differences)
                     {

@@ -107,4 +107,23 @@ internal sealed class UnitModule
 
     /// <summary>Every parameter written and verified by read-back, by <see cref="UnitFile.Key"/>.</summary>
     public required SortedDictionary<string, long> Parameters { get; init; }
+
+    /// <summary>Its motors' pot calibrations (<c>robotctl calibrate pots</c>), by the motor's <c>arm.joint</c>; null before any.</summary>
+    public SortedDictionary<string, UnitPotCalibration>? PotCalibration { get; set; }
+}
+
+/// <summary>One motor's pot calibration in a <see cref="UnitFile"/>: its table is in the module's <see cref="UnitModule.Parameters"/> (<c>pot_cal_*</c>).</summary>
+internal sealed class UnitPotCalibration
+{
+    /// <summary>When it was written into the module (UTC, ISO 8601).</summary>
+    public required string Date { get; init; }
+
+    /// <summary>Pot readings the table was fitted to.</summary>
+    public required int Samples { get; init; }
+
+    /// <summary>The verification sweep's worst pot/encoder disagreement, degrees of output (null: not verified).</summary>
+    public double? WorstDeg { get; set; }
+
+    /// <summary>True once the verification sweep stayed within its bound.</summary>
+    public bool Verified { get; set; }
 }

@@ -88,7 +88,9 @@ internal sealed class Homing(RobotLayout layout, BusClient client, ModuleRoster 
         var mask = 0;
         foreach (var m in c.Motors)
         {
-            if (PotCalibrationTable.Decode(layout.Table, block, start, m.Config.Channel).IsCalibrated)
+            var table = PotCalibrationTable.Decode(layout.Table, block, start, m.Config.Channel);
+            m.UsePotCalibration(table); // a unit's calibrated table, not the robot file's design curve
+            if (table.IsCalibrated)
             {
                 mask |= 1 << m.Config.Channel;
             }

@@ -25,6 +25,17 @@ public sealed class BusSimControlTests
     }
 
     [Fact]
+    public void Truth_gives_every_axis_its_true_output_angle_in_degrees()
+    {
+        var pose = new[] { -30.0, 10.0, 20.0, 40.0, 90.0 }.Select(d => d * Math.PI / 180).ToArray();
+        using var sim = new VirtualRobot(VirtualLb.Lb, new ManualTimeProvider(), new VirtualRobotOptions { Factory = true, InitialJointsRad = [pose, pose], InitialJawRad = 15 * Math.PI / 180 });
+        var truth = Answer(sim, "truth");
+        // shoulder_1 = yaw + pitch, shoulder_2 = yaw - pitch, shoulder_3 = roll - yaw - pitch (the robot file's couplings).
+        Assert.StartsWith("truth: right.shoulder_yaw -20.000 deg; right.shoulder_pitch -40.000 deg; right.shoulder_roll 40.000 deg; right.elbow 40.000 deg; right.tool_roll 90.000 deg; right.tool_open_close 15.000 deg; left.shoulder_yaw -20.000 deg", truth, StringComparison.Ordinal);
+        Assert.Equal(sim.Axes.Count, truth.Split("; ").Length);
+    }
+
+    [Fact]
     public void A_line_it_does_not_know_is_refused_with_what_it_knows()
     {
         using var sim = new VirtualRobot(VirtualLb.Lb, new ManualTimeProvider(), new VirtualRobotOptions { Factory = true });

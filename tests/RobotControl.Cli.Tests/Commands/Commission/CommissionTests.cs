@@ -1,5 +1,4 @@
 using System.Text.Json.Nodes;
-using System.Text.RegularExpressions;
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
 using RobotControl.Bus.Transports;
@@ -14,7 +13,7 @@ namespace RobotControl.Cli.Tests.Commands.Commission;
 /// modules at the default ID each one line.
 /// </summary>
 [Collection(RunProcess.Collection)]
-public sealed partial class CommissionTests : IDisposable
+public sealed class CommissionTests : IDisposable
 {
     private static readonly TimeSpan Patience = RunProcess.Patience;
     private static readonly byte FactoryId = (byte)ControlTable.Firmware["id"].Default;
@@ -206,40 +205,18 @@ public sealed partial class CommissionTests : IDisposable
         Assert.Equal(2, transport.Code);
     }
 
-    private static RunProcess StartSim(out string transport)
-    {
-        var sim = new RunProcess(typing: true, "bus-sim", Robot, "--pty", "--factory", "--unit-variation", "3");
-        transport = Transport().Match(sim.WaitFor("plug modules in on stdin", Patience)).Value;
-        return sim;
-    }
+    private static RunProcess StartSim(out string transport) => FactoryBench.StartSim(out transport);
 
     private RunProcess Commission(string transport, string unit, string? robot = null) =>
         new("commission", robot ?? Robot, "--transport", transport, "--unit", unit, "--units", _units, "--yes", "--margin-ms", "50");
 
-    /// <summary>Connects modules <paramref name="from"/>..<paramref name="to"/> (the command's numbering), each as the command asks for it.</summary>
-    private static void ConnectAsAsked(RunProcess sim, RunProcess commission, int from, int to)
-    {
-        for (var k = from; k <= to; k++)
-        {
-            var id = Prompted(commission, k);
-            sim.Type($"connect {id}");
-            sim.WaitFor($"connected module {id} ", Patience);
-        }
-    }
+    private static void ConnectAsAsked(RunProcess sim, RunProcess commission, int from, int to) => FactoryBench.ConnectAsAsked(sim, commission, from, to);
 
-    /// <summary>The robot-file ID of module <paramref name="k"/> the command asks to connect.</summary>
-    private static int Prompted(RunProcess commission, int k)
-    {
-        var output = commission.WaitFor($"connect module {k} of 6 (", Patience);
-        return int.Parse(Regex.Match(output, $@"connect module {k} of 6 \([^)]*, id (\d+)\)").Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
-    }
+    private static int Prompted(RunProcess commission, int k) => FactoryBench.Prompted(commission, k);
 
     private List<int> Modules(string unit)
     {
         var path = Path.Combine(_units, unit + ".json");
         return File.Exists(path) ? [.. JsonNode.Parse(File.ReadAllText(path))!["modules"]!.AsArray().Select(m => (int)m!["id"]!)] : [];
     }
-
-    [GeneratedRegex(@"serial:\S+")]
-    private static partial Regex Transport();
 }
