@@ -206,6 +206,7 @@ internal sealed class StatusPublisher : IDisposable
                 c.Id,
                 _modules.NameOf(c),
                 c.Present,
+                c.MissedReplies,
                 c.ModelNumber,
                 c.FirmwareVersion,
                 ResetCause(c.LastResetCause),

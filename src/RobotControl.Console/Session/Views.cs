@@ -54,7 +54,8 @@ public sealed record BusCounters(long Cycles, long Frames, long CrcErrors, long 
 /// <summary>One controller (motor-control module).</summary>
 /// <param name="Id">Bus ID.</param>
 /// <param name="Name">Friendly name.</param>
-/// <param name="Present">True when it answers.</param>
+/// <param name="Present">True when it answered discovery.</param>
+/// <param name="MissedReplies">Polls in a row it has not answered (0: it answered the last); above 0 the values shown are the last it gave.</param>
 /// <param name="Model">Model number it reported.</param>
 /// <param name="Firmware">Firmware version it reported.</param>
 /// <param name="ResetCause">Why it last reset, in words.</param>
@@ -66,6 +67,7 @@ public sealed record ControllerView(
     int Id,
     string Name,
     bool Present,
+    int MissedReplies,
     int Model,
     int Firmware,
     string ResetCause,

@@ -86,7 +86,7 @@ export interface MotorView {
   manual: boolean; torqueOn: boolean; errors: string[]; parameters: ParameterSpec[];
 }
 export interface ControllerView {
-  id: number; name: string; present: boolean; model: number; firmware: number; resetCause: string; resets: number; watchdog: string;
+  id: number; name: string; present: boolean; missedReplies: number; model: number; firmware: number; resetCause: string; resets: number; watchdog: string;
   hardwareErrors: string[]; motors: MotorView[];
 }
 export interface SessionStatus {

@@ -111,8 +111,10 @@ function update(c: ControllerView): void {
     const e = scope.querySelector(`[data-field="${field}"]`);
     if (e && e.textContent !== text) e.textContent = text;
   };
-  card.classList.toggle('missing', !c.present);
-  set(card, 'present', c.present ? 'present' : 'MISSING');
+  // A module that stopped answering is not shown as healthy: its last values stay, said to be its last.
+  const silent = !c.present || c.missedReplies > 0;
+  card.classList.toggle('missing', silent);
+  set(card, 'present', c.missedReplies > 0 ? `NOT ANSWERING (${c.missedReplies} polls missed): the values below are the last it gave` : c.present ? 'present' : 'MISSING');
   set(card, 'reset', `last reset: ${c.resetCause} (${c.resets} this session)`);
   set(card, 'watchdog', `watchdog ${c.watchdog}`);
   set(card, 'alerts', c.hardwareErrors.length ? `alerts: ${c.hardwareErrors.join(', ')}` : 'no alerts');
@@ -120,9 +122,9 @@ function update(c: ControllerView): void {
     const row = card.querySelector(`[data-motor="${m.name}"]`);
     if (!row) continue;
     set(row, 'position', fmt(m.positionDeg, 2));
-    set(row, 'current', fmt(m.currentA, 3));
+    set(row, 'current', silent ? `${fmt(m.currentA, 3)} (last)` : fmt(m.currentA, 3));
     set(row, 'pwm', String(m.pwm));
-    set(row, 'torque', `${m.torqueOn ? 'on' : 'off'}${m.manual ? ' · manual' : ''}`);
+    set(row, 'torque', silent ? 'unknown: no answer' : `${m.torqueOn ? 'on' : 'off'}${m.manual ? ' · manual' : ''}`);
     set(row, 'errors', m.errors.join(', ') || '—');
     for (const p of m.parameters) {
       const input = row.querySelector<HTMLInputElement>(`input[data-param="${p.key}"]`);
