@@ -40,7 +40,7 @@ internal sealed class LinkSender : IDisposable
     public void Start()
     {
         _connection = new LinkConnection(_settings, _instanceName);
-        _thread = new Thread(() => RunAsync(_connection).GetAwaiter().GetResult()) { IsBackground = true, Name = $"link_out {_instanceName}" };
+        _thread = new Thread(() => Run(_connection)) { IsBackground = true, Name = $"link_out {_instanceName}" };
         _thread.Start();
     }
 
@@ -61,7 +61,9 @@ internal sealed class LinkSender : IDisposable
         _wake.Dispose();
     }
 
-    private async Task RunAsync(LinkConnection connection)
+    // Synchronous on the sender's own thread: it alone waits (for the loop's wake-up, for a publish to complete), never
+    // a thread-pool thread, which the client's own reading and writing need (a starved pool would delay both).
+    private void Run(LinkConnection connection)
     {
         var frame = new byte[_ring.FrameLength];
         var stop = _stop.Token;
@@ -69,7 +71,7 @@ internal sealed class LinkSender : IDisposable
         {
             while (!stop.IsCancellationRequested)
             {
-                if (!connection.Connected && !await connection.EnsureConnectedAsync(stop).ConfigureAwait(false))
+                if (!connection.Connected && !connection.EnsureConnectedAsync(stop).GetAwaiter().GetResult())
                 {
                     Discard(frame);
                     continue;
@@ -78,7 +80,7 @@ internal sealed class LinkSender : IDisposable
                 _wake.WaitOne(TimeSpan.FromMilliseconds(100));
                 while (!stop.IsCancellationRequested && _ring.TryRead(frame))
                 {
-                    await PublishAsync(connection, frame, stop).ConfigureAwait(false);
+                    Publish(connection, frame, stop);
                 }
             }
         }
@@ -87,11 +89,11 @@ internal sealed class LinkSender : IDisposable
         }
         finally
         {
-            await connection.DisposeAsync().ConfigureAwait(false);
+            connection.DisposeAsync().AsTask().GetAwaiter().GetResult();
         }
     }
 
-    private async Task PublishAsync(LinkConnection connection, byte[] frame, CancellationToken stop)
+    private void Publish(LinkConnection connection, byte[] frame, CancellationToken stop)
     {
         if (!connection.Connected)
         {
@@ -101,7 +103,12 @@ internal sealed class LinkSender : IDisposable
 
         try
         {
-            await connection.Client.PublishAsync(_settings.Subject, frame, cancellationToken: stop).ConfigureAwait(false);
+            var pending = connection.Client.PublishAsync(_settings.Subject, frame, cancellationToken: stop);
+            if (!pending.IsCompletedSuccessfully)
+            {
+                pending.AsTask().GetAwaiter().GetResult();
+            }
+
             Interlocked.Increment(ref _sent);
         }
         catch (NATS.Client.Core.NatsException ex)
