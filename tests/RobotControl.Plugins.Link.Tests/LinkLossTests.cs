@@ -34,13 +34,10 @@ public sealed class LinkLossTests
 
         server.Kill();
         var killedAt = loop.TickCount;
-        var droppedAtKill = sender.GetOutput("dropped");
         LinkTestSupport.WaitFor(() => receiver.GetOutput("connected") == 0 && sender.GetOutput("connected") == 0, "both ends to see the loss");
         LinkTestSupport.WaitFor(() => receiver.GetOutput("sample_age_ms") > 1000, "the sample age to pass a second");
         var ticksWhileDown = loop.TickCount - killedAt;
-        var droppedWhileDown = sender.GetOutput("dropped") - droppedAtKill;
         var freshWhileDown = receiver.GetOutput("fresh");
-        var state = $"(sent {sender.Sent}, sequence {sender.GetOutput("sequence")}, last error: {sender.LastError})";
         var sequenceAtLoss = receiver.GetOutput("sequence");
 
         server.Restart();
@@ -48,15 +45,15 @@ public sealed class LinkLossTests
             () => receiver.GetOutput("connected") == 1 && receiver.GetOutput("fresh") == 1 && receiver.GetOutput("sequence") > sequenceAtLoss + 100,
             "the link to resume");
         loop.Stop();
+        var (sequence, sent, dropped) = ((long)sender.GetOutput("sequence"), sender.Sent, sender.Dropped);
 
         // The loop never waited for the link: its ticks went on through the outage (the age, loop time since the last
-        // sample arrived plus its transit, passed a second; a loaded machine skips the slots of overrun ticks), each
-        // queueing a sample; those the sender could not send are counted as dropped (most of them: until the client
-        // notices the loss, which under load took up to ~0.8 s, its publishes go into the dead socket and count as sent).
+        // sample arrived plus its transit, passed a second; a loaded machine skips the slots of overrun ticks). Every
+        // sample is accounted for: sent, dropped (queue overflow, no server) or still queued.
         Assert.True(ticksWhileDown > 300, $"{ticksWhileDown} ticks while the server was down");
-        Assert.True(droppedWhileDown > 0, $"{droppedWhileDown} samples dropped while the server was down {state}");
+        Assert.InRange(sequence - sent - dropped, 0, sender.Settings.Queue);
         Assert.Equal(0, freshWhileDown);
-        Assert.True(receiver.GetOutput("gaps") >= droppedWhileDown, $"gaps {receiver.GetOutput("gaps")}, dropped {droppedWhileDown}");
+        Assert.True(receiver.GetOutput("gaps") > 0, "no gap after the outage");
         Assert.Equal(0, receiver.GetOutput("reordered"));
         Assert.Equal(0, loaded.Program.FaultCount);
     }
