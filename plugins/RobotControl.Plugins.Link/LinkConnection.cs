@@ -60,7 +60,9 @@ internal sealed class LinkConnection : IAsyncDisposable
             return false;
         }
 
-        await Task.WhenAny(_connecting, Task.Delay(PollPeriod, stop)).ConfigureAwait(false);
+        // Connected once and now reconnecting by itself: poll (the finished connect task would return at once: a busy loop).
+        var poll = Task.Delay(PollPeriod, stop);
+        await (_connecting.IsCompleted ? poll : Task.WhenAny(_connecting, poll)).ConfigureAwait(false);
         return Connected;
     }
 
