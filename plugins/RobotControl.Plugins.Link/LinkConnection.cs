@@ -11,10 +11,10 @@ namespace RobotControl.Plugins.Link;
 internal sealed class LinkConnection : IAsyncDisposable
 {
     private static readonly TimeSpan Retry = TimeSpan.FromSeconds(1);
+    private static readonly TimeSpan PollPeriod = TimeSpan.FromMilliseconds(10);
     private readonly NatsOpts _options;
     private readonly string _credentials;
-    private static readonly TimeSpan PollPeriod = TimeSpan.FromMilliseconds(10);
-    private NatsConnection _connection;
+    private volatile NatsConnection _connection; // replaced by the worker, read by the loop (Connected)
     private Task? _connecting;
     private volatile string? _lastError;
 
