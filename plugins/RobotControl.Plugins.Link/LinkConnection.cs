@@ -16,6 +16,7 @@ internal sealed class LinkConnection : IAsyncDisposable
     private readonly string _credentials;
     private volatile NatsConnection _connection; // replaced by the worker, read by the loop (Connected)
     private Task? _connecting;
+    private long _connectingSince;
     private volatile string? _lastError;
 
     public LinkConnection(LinkSettings settings, string instanceName)
@@ -49,7 +50,16 @@ internal sealed class LinkConnection : IAsyncDisposable
             return true;
         }
 
-        _connecting ??= _connection.ConnectAsync().AsTask();
+        if (_connecting is null)
+        {
+            _connecting = _connection.ConnectAsync().AsTask();
+            _connectingSince = Environment.TickCount64;
+        }
+        else if (!_connecting.IsCompleted && Environment.TickCount64 - _connectingSince > _options.ConnectTimeout.TotalMilliseconds)
+        {
+            LastError = $"{_options.Url}: no server answers (still trying)";
+        }
+
         if (_connecting.IsFaulted || (_connecting.IsCompleted && _connection.ConnectionState == NatsConnectionState.Closed))
         {
             LastError = $"{_options.Url}: {(_connecting.Exception is { } failure ? Describe(failure) : "the client gave up reconnecting")} (credentials: {_credentials})";

@@ -149,6 +149,24 @@ public sealed class LinkRealServerTests
         Assert.Equal(0, inPlugin.Received);
     }
 
+    [Fact]
+    public void An_unreachable_server_leaves_the_link_disconnected_with_one_line_saying_so()
+    {
+        using var server = NatsServer.Start();
+        var url = server.Url;
+        server.Kill(); // a port where nothing listens
+        using var inPlugin = LinkTestSupport.In(url, LinkTestSupport.NewSubject(), name: "from_robot");
+        var receiver = new PluginDriver(inPlugin).Start();
+
+        LinkTestSupport.WaitFor(() => inPlugin.LastError is not null, "the error");
+        receiver.Tick();
+
+        Assert.Equal($"{url}: no server answers (still trying)", inPlugin.LastError);
+        Assert.Equal(0, receiver["connected"]);
+        Assert.Equal(LinkInPlugin.NoSampleAgeMs, receiver["sample_age_ms"]);
+        Assert.Equal(0, receiver["fresh"]);
+    }
+
     private static byte[] Frame(uint layout, long sequence, double x)
     {
         var frame = new byte[LinkFrame.Length(2)];
