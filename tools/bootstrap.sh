@@ -29,6 +29,9 @@ command -v python3 >/dev/null 2>&1 || need+=(python3)
 command -v stress-ng >/dev/null 2>&1 || need+=(stress-ng)
 # ... and measures the machine's own scheduling latency with cyclictest (rt-tests) before each scenario.
 command -v cyclictest >/dev/null 2>&1 || need+=(rt-tests)
+# The link plug-ins (plugins/RobotControl.Plugins.Link) talk through a NATS server; their tests start their own
+# nats-server on a free loopback port (tests/RobotControl.TestSupport/Nats).
+command -v nats-server >/dev/null 2>&1 || need+=(nats-server)
 
 if [ ${#need[@]} -gt 0 ]; then
   echo "bootstrap: installing ${need[*]}"

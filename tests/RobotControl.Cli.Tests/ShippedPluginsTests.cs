@@ -9,7 +9,7 @@ public sealed class ShippedPluginsTests
     {
         var catalog = ShippedPlugins.Catalog();
         Assert.Empty(catalog.Problems);
-        Assert.All(new[] { "clutch", "touch", "coppeliasim", "foot_pedals" }, name => Assert.NotNull(catalog.Find(name)));
+        Assert.All(new[] { "clutch", "touch", "coppeliasim", "foot_pedals", "link_out", "link_in" }, name => Assert.NotNull(catalog.Find(name)));
         Assert.Equal(HostDevices.Open, catalog.DeviceOpener);
         Assert.ThrowsAny<FormatException>(() => catalog.DeviceOpener!("nonsense"));
     }
