@@ -49,7 +49,7 @@ public sealed class LinkInPlugin : Plugin<LinkInSettings>, IDisposable
         SettingsSchema.For(typeof(LinkInSettings)).ThrowIfInvalid(Settings, context.InstanceName);
         Signals = LinkSignals.Parse(Settings.Signals);
         _values = [.. Signals.Select(s => DeclareOutput(s, SafeValue.HoldLastFinite, "", $"{s}, received on {Settings.Subject} (0 until the first sample)"))];
-        _age = DeclareOutput(AgePort, SafeValue.HoldLastFinite, "ms", $"age of the values: loop time since the sample arrived plus its transit (receiver's wall clock minus the sender's); {NoSampleAgeMs:G} before the first sample. Wire it to the robot's arm.input_age_ms (the master timeout)", NoSampleAgeMs);
+        _age = DeclareOutput(AgePort, SafeValue.Initial, "ms", $"age of the values: loop time since the sample arrived plus its transit (receiver's wall clock minus the sender's); {NoSampleAgeMs:G} before the first sample. Wire it to the robot's arm.input_age_ms (the master timeout)", NoSampleAgeMs);
         _connected = DeclareOutput(ConnectedPort, SafeValue.Zero, "", "1 while the connection to the server is open");
         _fresh = DeclareOutput(FreshPort, SafeValue.Zero, "", "1 while the values are younger than stale_after_ms");
         _sequence = DeclareOutput(SequencePort, SafeValue.HoldLastFinite, "", "sequence number of the sample shown (0 before the first)");

@@ -8,4 +8,10 @@ public enum SafeValue
 
     /// <summary>Zero (forces, velocities: "stop pushing").</summary>
     Zero,
+
+    /// <summary>
+    /// The port's initial value (an age: "never heard from", so that a faulted receiver reads as stale rather than as
+    /// fresh as it last was).
+    /// </summary>
+    Initial,
 }

@@ -63,7 +63,7 @@ public sealed record PluginPorts(IReadOnlyList<PortDescription> Inputs, IReadOnl
 /// <param name="Units">Units (empty when none).</param>
 /// <param name="Description">What it carries.</param>
 /// <param name="InitialValue">Its value before the first tick.</param>
-/// <param name="SafeValue">For an output, what it becomes when its plug-in faults (<c>hold_last_finite</c> or <c>zero</c>); null for an input.</param>
+/// <param name="SafeValue">For an output, what it becomes when its plug-in faults (<c>hold_last_finite</c>, <c>zero</c> or <c>initial</c>); null for an input.</param>
 public sealed record PortDescription(string Name, string Units, string Description, double InitialValue, string? SafeValue)
 {
     /// <summary>Describes <paramref name="port"/>.</summary>

@@ -18,7 +18,8 @@ public sealed class GraphProgram
     private readonly double[] _inputs;
     private readonly double[] _outputs;
     private readonly double[] _lastFinite;
-    private readonly bool[] _safeIsZero;
+    private readonly bool[] _safeIsFixed; // zero or initial: the output goes to _fixedSafe; else it holds its last finite value
+    private readonly double[] _fixedSafe;
     private readonly int[] _outputStart; // per instance (order index), CSR into outputs; length n + 1
     private readonly int[] _wireStart; // per instance, CSR into the undelayed wires feeding it; length n + 1
     private readonly int[] _wireSource; // output slot
@@ -53,7 +54,8 @@ public sealed class GraphProgram
         _inputs = new double[inputStart[n]];
         _outputs = new double[_outputStart[n]];
         _lastFinite = new double[_outputs.Length];
-        _safeIsZero = new bool[_outputs.Length];
+        _safeIsFixed = new bool[_outputs.Length];
+        _fixedSafe = new double[_outputs.Length];
         var outputNames = new string[_outputs.Length];
         var inputNames = new string[_inputs.Length];
         for (var i = 0; i < n; i++)
@@ -63,7 +65,8 @@ public sealed class GraphProgram
             foreach (var o in p.Outputs)
             {
                 var slot = _outputStart[i] + o.Index;
-                _safeIsZero[slot] = o.SafeValue == SafeValue.Zero;
+                _safeIsFixed[slot] = o.SafeValue is SafeValue.Zero or SafeValue.Initial;
+                _fixedSafe[slot] = o.SafeValue == SafeValue.Initial ? o.InitialValue : 0.0;
                 _lastFinite[slot] = o.InitialValue;
                 outputNames[slot] = SignalName.Join(p.Name, o.Name);
             }
@@ -299,7 +302,7 @@ public sealed class GraphProgram
             }
             else
             {
-                outputs[o] = _safeIsZero[o] ? 0.0 : _lastFinite[o];
+                outputs[o] = _safeIsFixed[o] ? _fixedSafe[o] : _lastFinite[o];
                 _nonFinite[node]++;
             }
         }
@@ -311,7 +314,7 @@ public sealed class GraphProgram
         _tainted[node] = true;
         for (var o = _outputStart[node]; o < _outputStart[node + 1]; o++)
         {
-            _outputs[o] = _safeIsZero[o] ? 0.0 : _lastFinite[o];
+            _outputs[o] = _safeIsFixed[o] ? _fixedSafe[o] : _lastFinite[o];
         }
 
         Record(new PluginFault(_order[node].Name, context.Index, context.Elapsed, $"{what}: {ex.GetType().Name}: {ex.Message}", ex));

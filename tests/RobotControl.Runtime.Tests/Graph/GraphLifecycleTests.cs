@@ -95,6 +95,46 @@ public sealed class GraphLifecycleTests
         Assert.Throws<InvalidOperationException>(() => program.Start(Ticks.At(0)));
     }
 
+    /// <summary>Writes 42 to one output of each safe value (initial 7) until it throws, in tick 3.</summary>
+    private sealed class ThrowsInTick3 : Plugin
+    {
+        private readonly OutputPort[] _outs;
+
+        public ThrowsInTick3()
+            : base(PluginContext.Standalone("thrower")) =>
+            _outs = [DeclareOutput("hold", SafeValue.HoldLastFinite, initialValue: 7), DeclareOutput("zero", SafeValue.Zero, initialValue: 7), DeclareOutput("initial", SafeValue.Initial, initialValue: 7)];
+
+        public override void Tick(in TickContext context)
+        {
+            if (context.Index == 3)
+            {
+                throw new InvalidOperationException("broken");
+            }
+
+            foreach (var o in _outs)
+            {
+                Write(o, 42);
+            }
+        }
+    }
+
+    [Fact]
+    public void A_plug_in_that_faults_mid_run_leaves_each_output_at_its_safe_value_hold_zero_or_initial()
+    {
+        var graph = new PluginGraph();
+        var thrower = new ThrowsInTick3();
+        graph.Add(thrower);
+        var program = graph.Compile();
+        program.Start(Ticks.At(0));
+        for (var k = 0; k < 5; k++)
+        {
+            program.Tick(Ticks.At(k));
+        }
+
+        Assert.True(program.IsFaulted("thrower"));
+        Assert.Equal((42.0, 0.0, 7.0), (thrower.GetOutput("hold"), thrower.GetOutput("zero"), thrower.GetOutput("initial")));
+    }
+
     [Fact]
     public void An_instance_that_fails_to_start_is_faulted_never_ticked_and_its_outputs_are_safe()
     {

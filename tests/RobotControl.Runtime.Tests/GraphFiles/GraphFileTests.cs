@@ -115,7 +115,7 @@ public sealed class GraphFileTests
         Assert.Contains(problems, p => p.StartsWith("$.instances[0].settings.samples: expected an integer, found string", StringComparison.Ordinal));
         Assert.Contains(problems, p => p.StartsWith("$.instances[1].type: unknown plug-in type 'no_such_type' (known: example)", StringComparison.Ordinal));
         Assert.Contains(problems, p => p.StartsWith("$.instances[3].name: duplicate instance name 'c'", StringComparison.Ordinal));
-        Assert.Contains(problems, p => p.StartsWith("$.instances[4].settings.mode: 'sideways' is not one of hold_last_finite, zero", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("$.instances[4].settings.mode: 'sideways' is not one of hold_last_finite, zero, initial", StringComparison.Ordinal));
         Assert.Contains(problems, p => p.StartsWith("$.wires[0].from: unknown output 'c.missing'", StringComparison.Ordinal));
         Assert.Contains(problems, p => p.StartsWith("$.wires[1].to: unknown input 'c.nothing'", StringComparison.Ordinal));
         Assert.Contains(problems, p => p.StartsWith("$.wires[2].from: 'c.in' is an input", StringComparison.Ordinal));
