@@ -30,7 +30,6 @@ public sealed class CoppeliaSimPlugin : Plugin<CoppeliaSimSettings>, IDisposable
         : base(settings, context)
     {
         ArgumentNullException.ThrowIfNull(context);
-        SettingsSchema.For(typeof(CoppeliaSimSettings)).ThrowIfInvalid(Settings, context.InstanceName);
         var map = JointPathMap.Build(context.RequireRobot(), Settings, context.InstanceName);
         _inputs = [.. map.Select(m => DeclareInput(m.Signal, "rad", $"{m.Signal} command, sent to {m.Path}"))];
         _positions = [.. map.Select(m => DeclareOutput($"{m.Signal}.position", SafeValue.HoldLastFinite, "rad", $"{m.Signal} position the simulator reports"))];

@@ -46,7 +46,6 @@ public sealed class LinkInPlugin : Plugin<LinkInSettings>, IDisposable
         : base(settings, context)
     {
         ArgumentNullException.ThrowIfNull(context);
-        SettingsSchema.For(typeof(LinkInSettings)).ThrowIfInvalid(Settings, context.InstanceName);
         Signals = LinkSignals.Parse(Settings.Signals);
         _values = [.. Signals.Select(s => DeclareOutput(s, SafeValue.HoldLastFinite, "", $"{s}, received on {Settings.Subject} (0 until the first sample)"))];
         _age = DeclareOutput(AgePort, SafeValue.Initial, "ms", $"age of the values: loop time since the sample arrived plus its transit (receiver's wall clock minus the sender's); {NoSampleAgeMs:G} before the first sample. Wire it to the robot's arm.input_age_ms (the master timeout)", NoSampleAgeMs);

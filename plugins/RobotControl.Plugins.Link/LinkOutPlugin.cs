@@ -32,7 +32,6 @@ public sealed class LinkOutPlugin : Plugin<LinkOutSettings>, IDisposable
         : base(settings, context)
     {
         ArgumentNullException.ThrowIfNull(context);
-        SettingsSchema.For(typeof(LinkOutSettings)).ThrowIfInvalid(Settings, context.InstanceName);
         Signals = LinkSignals.Parse(Settings.Signals);
         _inputs = [.. Signals.Select(s => DeclareInput(s, "", $"{s}, sent on {Settings.Subject}"))];
         _connected = DeclareOutput(LinkInPlugin.ConnectedPort, SafeValue.Zero, "", "1 while the connection to the server is open");
