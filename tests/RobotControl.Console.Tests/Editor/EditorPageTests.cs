@@ -81,6 +81,38 @@ public sealed class EditorPageTests(EditorFixture console)
     }
 
     [Fact]
+    public async Task A_node_that_grows_when_its_ports_are_known_pushes_down_the_one_placed_under_it()
+    {
+        var page = await Open();
+        await page.GetByTestId("new").ClickAsync();
+        string[] types = ["touch", "homing", "scaling", "clutch", "inverse_kinematics"]; // the fifth goes under the first
+        foreach (var type in types)
+        {
+            await page.Locator($".ged-type[data-type={type}]").ClickAsync();
+            await page.Locator($".drawflow-node[data-instance={type}_1]").WaitForAsync();
+            await page.Locator("[data-testid=problems][data-count]").WaitForAsync();
+        }
+
+        var touch = page.Locator(".drawflow-node[data-instance=touch_1]");
+        var ik = page.Locator(".drawflow-node[data-instance=inverse_kinematics_1]");
+        var before = (await touch.BoundingBoxAsync())!;
+        Assert.Equal(0, await touch.Locator(".output").CountAsync()); // a Touch without its device or script has no ports yet
+
+        await touch.Locator(".gn-head").ClickAsync();
+        await page.Locator("[data-setting=script]").FillAsync("trajectories/demo-right.csv");
+        await page.Locator("[data-setting=script]").PressAsync("Tab");
+        await touch.Locator(".output[data-signal='touch_1.roll']").WaitForAsync();
+        await page.Locator("[data-testid=problems][data-count]").WaitForAsync();
+
+        var grown = (await touch.BoundingBoxAsync())!;
+        var below = (await ik.BoundingBoxAsync())!;
+        Assert.True(grown.Height > before.Height + 100, $"the Touch grew: {before.Height} -> {grown.Height} px");
+        Assert.True(below.Y >= grown.Y + grown.Height, $"the IK (top {below.Y}) is below the grown Touch (bottom {grown.Y + grown.Height})");
+        await touch.Locator(".output[data-signal='touch_1.roll']").HoverAsync(new() { Trial = true }); // nothing covers its ports
+        await Close(page);
+    }
+
+    [Fact]
     public async Task An_invalid_setting_and_an_invalid_wire_show_their_problem_and_block_start()
     {
         var page = await Open();

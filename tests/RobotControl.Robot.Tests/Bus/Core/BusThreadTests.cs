@@ -122,10 +122,13 @@ public sealed class BusThreadTests
         }
 
         // Some (the work posted), and not those of before its first cycle (nor other threads'): what stopping the
-        // thread compiles afterwards is far less than the methods compiled before the first cycle.
+        // thread compiles afterwards is far less than the methods compiled before the first cycle. The time is
+        // counted between the same two points, but it is the thread's wall time in the compiler, which a host
+        // holding the virtual CPU stretches (4 ms against 2 ms for all before, on CI): only counts bound it.
         Assert.True(beforeFirstCycle >= FreshMethods);
         Assert.InRange(robot.MethodsCompiledAfterFirstCycle, 1, compiled - (FreshMethods / 2));
-        Assert.InRange(robot.CompileTimeAfterFirstCycle, TimeSpan.Zero, compileTime);
+        Assert.True(robot.CompileTimeAfterFirstCycle > TimeSpan.Zero, "the posted work's compile time counted");
+        Assert.True(compileTime > TimeSpan.Zero);
     }
 
     private const int FreshMethods = 60;

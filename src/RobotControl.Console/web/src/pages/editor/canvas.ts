@@ -182,6 +182,41 @@ export class GraphCanvas {
     return y;
   }
 
+  /**
+   * Moves nodes down until none covers another: a node drawn again with the ports its settings give it (a Touch
+   * with a script, an IK with the robot's joints) can grow over one placed below it while it was smaller. Nodes
+   * keep their order from the top; the model's positions follow (no undo step: nothing the user did). True when
+   * one moved.
+   */
+  separate(): boolean {
+    const gap = 40;
+    const boxes = [...this.ids.keys()].flatMap((name) => {
+      const e = this.nodeElement(name);
+      return e ? [{ name, x: e.offsetLeft, y: e.offsetTop, w: e.offsetWidth, h: e.offsetHeight, moved: false }] : [];
+    }).sort((a, b) => a.y - b.y || a.x - b.x);
+    const placed: typeof boxes = [];
+    for (const b of boxes) {
+      for (let again = true; again;) {
+        again = false;
+        for (const a of placed) {
+          if (a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h) {
+            b.y = a.y + a.h + gap;
+            b.moved = true;
+            again = true;
+          }
+        }
+      }
+      placed.push(b);
+    }
+    const g = this.graph;
+    for (const b of boxes.filter((x) => x.moved)) {
+      if (b.name === robotInstance) g.robotY = b.y;
+      const i = g.instances.find((x) => x.name === b.name);
+      if (i) i.y = b.y;
+    }
+    return boxes.some((b) => b.moved);
+  }
+
   /** Scales and moves the view so every node shows. */
   fit(): void {
     const nodes = [...this.container.querySelectorAll<HTMLElement>('.drawflow-node')];

@@ -71,7 +71,10 @@ export function editorPage(root: HTMLElement): () => void {
     const editing = pane.contains(document.activeElement);
     if (JSON.stringify(reply.ports) !== JSON.stringify(instancePorts)) {
       instancePorts = reply.ports;
-      canvas.renderWhenIdle(decorate);
+      canvas.renderWhenIdle(() => {
+        if (canvas.separate()) canvas.render();
+        decorate();
+      });
     }
     decorate();
     // Rebuilding the pane under the user's cursor would drop what they type: then only mark the fields.
