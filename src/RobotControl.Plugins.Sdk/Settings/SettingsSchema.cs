@@ -181,13 +181,23 @@ public sealed class SettingsSchema
         return errors.Count > before ? null : settings;
     }
 
-    /// <summary>Writes every setting of <paramref name="settings"/> as a JSON object.</summary>
+    /// <summary>
+    /// The settings of <paramref name="settings"/> that a graph file must hold to give them: those that differ from
+    /// their <see cref="SettingDescriptor.DefaultValue"/>, and the required ones. A file written with them alone reads
+    /// back to the same settings, and says only what its author chose.
+    /// </summary>
+    public IReadOnlyList<SettingDescriptor> Given(PluginSettings settings)
+    {
+        ArgumentNullException.ThrowIfNull(settings);
+        return [.. Settings.Where(s => s.Required || !Equals(s.Property.GetValue(settings), s.DefaultValue))];
+    }
+
+    /// <summary>Writes the settings of <paramref name="settings"/> that differ from their defaults (<see cref="Given"/>) as a JSON object.</summary>
     public void Write(Utf8JsonWriter writer, PluginSettings settings)
     {
         ArgumentNullException.ThrowIfNull(writer);
-        ArgumentNullException.ThrowIfNull(settings);
         writer.WriteStartObject();
-        foreach (var s in Settings)
+        foreach (var s in Given(settings))
         {
             var value = s.Property.GetValue(settings);
             writer.WritePropertyName(s.JsonName);

@@ -105,7 +105,7 @@ public static class GraphFile
         }
     }
 
-    /// <summary>Writes <paramref name="document"/> as a graph file (settings in full, wires in order).</summary>
+    /// <summary>Writes <paramref name="document"/> as a graph file (the settings that differ from their defaults, wires in order).</summary>
     public static void Save(GraphDocument document, string path)
     {
         ArgumentException.ThrowIfNullOrEmpty(path);
@@ -134,7 +134,7 @@ public static class GraphFile
                 writer.WriteStartObject();
                 writer.WriteString("name", instance.Name);
                 writer.WriteString("type", instance.Type);
-                if (instance.Settings is not null)
+                if (instance.Settings is not null && SettingsSchema.For(instance.Settings.GetType()).Given(instance.Settings).Count > 0)
                 {
                     writer.WritePropertyName("settings");
                     SettingsSchema.For(instance.Settings.GetType()).Write(writer, instance.Settings);

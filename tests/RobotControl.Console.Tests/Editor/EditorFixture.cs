@@ -77,6 +77,23 @@ public sealed class EditorFixture : IAsyncLifetime
         return http;
     }
 
+    /// <summary>A new browser context on the editor page, once its palette and first check are in.</summary>
+    public async Task<IPage> OpenEditor(int width = 2560, int height = 1440)
+    {
+        var page = await Browser.NewPageAsync(new() { ViewportSize = new() { Width = width, Height = height } });
+        await page.GotoAsync(ConsoleFixture.PageUrl(Server, "editor"));
+        await page.Locator(".ged-type[data-type=clutch]").WaitForAsync();
+        await page.Locator("[data-testid=problems][data-count]").WaitForAsync();
+        return page;
+    }
+
+    /// <summary>Gives up the page's operator role (if it took it) and closes it.</summary>
+    public static async Task CloseEditor(IPage page)
+    {
+        await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client'), Authorization: 'Bearer ' + sessionStorage.getItem('rc-console-token') } })");
+        await page.CloseAsync();
+    }
+
     /// <summary>An HTTP client that names itself <paramref name="client"/>.</summary>
     public HttpClient Client(string client)
     {

@@ -235,18 +235,7 @@ public sealed class EditorPageTests(EditorFixture console)
         return JsonSerializer.Deserialize<JsonElement>(json.ToJsonString());
     }
 
-    private async Task<IPage> Open(int width = 2560, int height = 1440)
-    {
-        var page = await console.Browser.NewPageAsync(new() { ViewportSize = new() { Width = width, Height = height } });
-        await page.GotoAsync(ConsoleFixture.PageUrl(console.Server, "editor"));
-        await page.Locator(".ged-type[data-type=clutch]").WaitForAsync();
-        await page.Locator("[data-testid=problems][data-count]").WaitForAsync();
-        return page;
-    }
+    private Task<IPage> Open(int width = 2560, int height = 1440) => console.OpenEditor(width, height);
 
-    private static async Task Close(IPage page)
-    {
-        await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client'), Authorization: 'Bearer ' + sessionStorage.getItem('rc-console-token') } })");
-        await page.CloseAsync();
-    }
+    private static Task Close(IPage page) => EditorFixture.CloseEditor(page);
 }

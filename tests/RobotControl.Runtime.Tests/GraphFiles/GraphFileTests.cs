@@ -43,6 +43,12 @@ public sealed class GraphFileTests
         Assert.Equal(saved, GraphFile.ToJson(reloaded.Document));
         Assert.Contains("\"reference_x_mm\": 3", saved, StringComparison.Ordinal);
         Assert.Contains("\"delayed\": true", saved, StringComparison.Ordinal);
+
+        // Only what the author chose: a setting at its default is not written (b's samples, a's ratio were given as
+        // 0.25 and are), the required script always is.
+        var written = System.Text.Json.Nodes.JsonNode.Parse(saved)!["instances"]!.AsArray();
+        Assert.Equal(["ratio", "reference_x_mm", "mode", "script"], written[0]!["settings"]!.AsObject().Select(p => p.Key));
+        Assert.Equal(["script"], written[1]!["settings"]!.AsObject().Select(p => p.Key));
     }
 
     [Fact]

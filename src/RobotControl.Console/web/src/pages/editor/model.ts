@@ -75,12 +75,37 @@ export function portOf(signal: string): string {
   return signal.slice(instanceOf(signal).length + 1);
 }
 
+/** The wires at instance <name> (either end). */
+export function wiresAt(g: GraphModel, name: string): WireModel[] {
+  return g.wires.filter((w) => instanceOf(w.from) === name || instanceOf(w.to) === name);
+}
+
+/** Removes instance <name> and its wires (one change). */
+export function removeInstance(g: GraphModel, name: string): void {
+  g.instances = g.instances.filter((x) => x.name !== name);
+  g.wires = g.wires.filter((w) => instanceOf(w.from) !== name && instanceOf(w.to) !== name);
+}
+
+/** A history as it can be kept (a draft): the graph and its undo and redo snapshots. */
+export interface HistoryState { graph: GraphModel; undos: string[]; redos: string[] }
+
 /** Undo and redo over snapshots of the model. */
 export class History {
   private readonly undos: string[] = [];
   private readonly redos: string[] = [];
 
   constructor(public graph: GraphModel, private readonly changed: () => void) {}
+
+  /** The graph with its undo and redo steps, to keep. */
+  get state(): HistoryState { return { graph: this.graph, undos: [...this.undos], redos: [...this.redos] }; }
+
+  /** Takes up a kept state (a draft): its graph and its undo and redo steps. */
+  restore(state: HistoryState): void {
+    this.graph = state.graph;
+    this.undos.splice(0, this.undos.length, ...state.undos);
+    this.redos.splice(0, this.redos.length, ...state.redos);
+    this.changed();
+  }
 
   /** Applies a change, remembering the graph before it. */
   change(apply: (g: GraphModel) => void): void {

@@ -6,7 +6,8 @@ import { el, button } from '../../dom';
 import { SignalStream } from '../../stream';
 import { GraphCanvas, type Selection } from './canvas';
 import { type Catalog, type NodePorts, type Problem, History, emptyGraph, freshName, fromFile, robotInstance, toFile } from './model';
-import { markFields, renderSide } from './side';
+import { markFields, removeNode, renderSide } from './side';
+import { clearDraft, readDraft, writeDraft } from './draft';
 import './editor.css';
 
 interface RunView { running: boolean; graph: string | null; transport: string; problem: string | null }
@@ -19,6 +20,7 @@ export function editorPage(root: HTMLElement): () => void {
   const start = button('Start', () => void startGraph(), { class: 'primary', 'data-testid': 'start' });
   const stop = button('Stop', () => void act(async () => { await api('POST', '/editor/stop'); await refreshRun(); return { message: 'stopped: motors off' }; }), { 'data-testid': 'stop' });
   const runState = el('span', { class: 'run-state', 'data-testid': 'run-state' });
+  const unsaved = el('span', { class: 'unsaved', 'data-testid': 'unsaved', hidden: '' }, 'unsaved edits');
   const palette = el('aside', { class: 'ged-palette', 'data-testid': 'palette' });
   const canvasBox = el('div', { class: 'ged-canvas', 'data-testid': 'graph-canvas' });
   const pane = el('div', { class: 'ged-pane', 'data-testid': 'side-pane' });
@@ -26,7 +28,7 @@ export function editorPage(root: HTMLElement): () => void {
   root.append(el('div', { class: 'ged' },
     el('div', { class: 'toolbar ged-toolbar' },
       graphs, button('Load', () => void load(graphs.value), { 'data-testid': 'load' }), button('New', () => fresh(), { 'data-testid': 'new' }),
-      el('span', { class: 'sep' }), fileName, button('Save', () => void save(), { 'data-testid': 'save', 'data-operator': '' }),
+      el('span', { class: 'sep' }), fileName, button('Save', () => void save(), { 'data-testid': 'save', 'data-operator': '' }), unsaved,
       el('span', { class: 'sep' }), undo, redo, button('Fit', () => canvas.fit()),
       el('span', { class: 'sep' }), start, stop, runState),
     el('div', { class: 'ged-main' }, palette, canvasBox, el('aside', { class: 'ged-side' }, pane, problemList))));
@@ -37,7 +39,13 @@ export function editorPage(root: HTMLElement): () => void {
   let checking = 0;
   let checkTimer = 0;
   let run: RunView | null = null;
+  // The file as it was last loaded or saved (toFile's JSON), and its name: the edits since are unsaved, and kept as a
+  // draft in this browser until saved or discarded.
+  let baseline = '';
+  let loadedName = '';
+  const isDirty = () => JSON.stringify(toFile(history.graph)) !== baseline;
   const history = new History(emptyGraph(null), () => changed());
+  baseline = JSON.stringify(toFile(history.graph)); // nothing to lose yet
   // A node's ports: as the last check created the instance with its settings, else the type's with default settings.
   let instancePorts: Record<string, NodePorts> = {};
   const portsOf = (name: string): NodePorts | null => instancePorts[name] ?? (name === robotInstance
@@ -53,6 +61,7 @@ export function editorPage(root: HTMLElement): () => void {
     problems = [];
     decorate();
     side();
+    keepDraft();
     undo.disabled = !history.canUndo;
     redo.disabled = !history.canRedo;
     clearTimeout(checkTimer);
@@ -99,15 +108,37 @@ export function editorPage(root: HTMLElement): () => void {
     if (forward) history.redo(); else history.undo();
   }
 
+  /** The edits since the last load or save, kept (or the draft dropped when there are none). */
+  function keepDraft(): void {
+    const dirty = isDirty();
+    unsaved.hidden = !dirty;
+    if (dirty) writeDraft({ fileName: fileName.value.trim(), baseline, loadedName, history: history.state, at: Date.now() });
+    else clearDraft();
+  }
+
+  /** True when there are no unsaved edits, or the user agreed to drop them. */
+  function mayDiscard(): boolean {
+    return !isDirty() || confirm(`Discard the unsaved edits of ${fileName.value.trim()}? (Cancel keeps them.)`);
+  }
+
+  /** The graph just loaded or saved under <name> is what unsaved edits are measured against. */
+  function saved(name: string): void {
+    baseline = JSON.stringify(toFile(history.graph));
+    loadedName = name;
+    keepDraft();
+  }
+
   function fresh(): void {
+    if (!mayDiscard()) return;
     selection = null;
     fileName.value = 'untitled.json';
     canvas.resetView();
     history.reset(emptyGraph(catalog.robotFile));
+    saved('');
   }
 
   async function load(name: string): Promise<void> {
-    if (!name) return;
+    if (!name || !mayDiscard()) return;
     await act(async () => {
       const file = await api<Record<string, unknown>>('GET', `/editor/graphs/${encodeURIComponent(name)}`);
       selection = null;
@@ -116,14 +147,32 @@ export function editorPage(root: HTMLElement): () => void {
       await check(); // each instance's ports, so the nodes are drawn at their size before they are laid out
       if (canvas.layOut()) history.reset(history.graph);
       canvas.fit();
+      saved(name);
       return { message: `loaded ${name}` };
     });
   }
 
+  /** Takes up the draft this browser kept (unsaved edits of an earlier visit), with its undo history. */
+  async function resume(): Promise<boolean> {
+    const draft = readDraft();
+    if (!draft) return false;
+    selection = null;
+    fileName.value = draft.fileName;
+    baseline = draft.baseline;
+    loadedName = draft.loadedName;
+    history.restore(draft.history);
+    await check();
+    canvas.fit();
+    show(`restored the unsaved edits of ${draft.fileName} from ${new Date(draft.at).toLocaleTimeString()} (kept in this browser): Save keeps them, Load or New discards them`);
+    return true;
+  }
+
   async function save(): Promise<boolean> {
+    const name = fileName.value.trim();
+    if (name !== loadedName && [...graphs.options].some((o) => o.value === name) && !confirm(`${name} exists: overwrite it?`)) return false;
     return act(async () => {
-      const name = fileName.value.trim();
       const reply = await api<{ message: string }>('PUT', `/editor/graphs/${encodeURIComponent(name)}`, { graph: toFile(history.graph) });
+      saved(name);
       await listGraphs(name);
       return reply;
     });
@@ -132,6 +181,7 @@ export function editorPage(root: HTMLElement): () => void {
   async function startGraph(): Promise<void> {
     await act(async () => {
       const reply = await api<RunView>('POST', '/editor/start', { name: fileName.value.trim(), graph: toFile(history.graph) });
+      saved(fileName.value.trim()); // Start saved it
       await listGraphs(fileName.value.trim());
       await refreshRun();
       return { message: `${reply.graph} runs on ${reply.transport}` };
@@ -188,16 +238,16 @@ export function editorPage(root: HTMLElement): () => void {
     } else if ((e.key === 'Delete' || e.key === 'Backspace') && !typing && selection) {
       const s = selection;
       e.preventDefault();
-      history.change((m) => {
-        if ('wire' in s) m.wires.splice(s.wire, 1);
-        else if (s.node !== robotInstance) {
-          m.instances = m.instances.filter((x) => x.name !== s.node);
-          m.wires = m.wires.filter((w) => !w.from.startsWith(`${s.node}.`) && !w.to.startsWith(`${s.node}.`));
-        }
-      });
+      if ('wire' in s) history.change((m) => { m.wires.splice(s.wire, 1); });
+      else if (s.node !== robotInstance) removeNode(history, s.node);
     }
   };
   document.addEventListener('keydown', onKey);
+  // Closing or reloading the tab with unsaved edits: the browser asks (the draft keeps them either way).
+  const onLeave = (e: BeforeUnloadEvent) => {
+    if (isDirty()) e.preventDefault();
+  };
+  window.addEventListener('beforeunload', onLeave);
 
   // Palette: click adds a node in view; drag drops it where it lands.
   function add(type: string, at?: { x: number; y: number }): void {
@@ -233,7 +283,9 @@ export function editorPage(root: HTMLElement): () => void {
       await listGraphs();
       await refreshRun();
       const running = (run as RunView | null)?.graph;
-      if (running) {
+      if (await resume()) {
+        // the draft, not the running graph
+      } else if (running) {
         graphs.value = running;
         await load(running);
       } else {
@@ -250,5 +302,6 @@ export function editorPage(root: HTMLElement): () => void {
     clearTimeout(checkTimer);
     stream?.close();
     document.removeEventListener('keydown', onKey);
+    window.removeEventListener('beforeunload', onLeave);
   };
 }

@@ -2,7 +2,7 @@
 // (delayed or not), or the graph itself; and the problems that concern no node or wire.
 import { el, button } from '../../dom';
 import type { Selection } from './canvas';
-import { type Catalog, type GraphModel, type History, type Problem, type SettingView, rename, robotInstance } from './model';
+import { type Catalog, type GraphModel, type History, type Problem, type SettingView, removeInstance, rename, robotInstance, wiresAt } from './model';
 
 export function renderSide(root: HTMLElement, s: Selection, history: History, catalog: Catalog, problems: Problem[], reselect: (s: Selection) => void): void {
   const g = history.graph;
@@ -33,10 +33,7 @@ export function renderSide(root: HTMLElement, s: Selection, history: History, ca
           else target.settings[setting.name] = v;
         }))),
       ...wires(g, i.name, history),
-      el('div', { class: 'pane-actions' }, button('Delete node', () => history.change((m) => {
-        m.instances = m.instances.filter((x) => x.name !== i.name);
-        m.wires = m.wires.filter((w) => !w.from.startsWith(`${i.name}.`) && !w.to.startsWith(`${i.name}.`));
-      }), { 'data-testid': 'delete-node' })));
+      el('div', { class: 'pane-actions' }, button('Delete node', () => removeNode(history, i.name), { 'data-testid': 'delete-node' })));
   } else if (s && 'wire' in s && g.wires[s.wire]) {
     const w = g.wires[s.wire];
     const delayed = el('input', { type: 'checkbox', 'data-testid': 'wire-delayed' });
@@ -107,4 +104,12 @@ export function markFields(root: HTMLElement, s: Selection, g: GraphModel, probl
     label.classList.toggle('bad', problem !== undefined);
     label.title = problem ? `${problem.path}: ${problem.message}` : '';
   });
+}
+
+/** Removes node <name>, and its wires after asking when it has any (one undo step); false when the user said no. */
+export function removeNode(history: History, name: string): boolean {
+  const n = wiresAt(history.graph, name).length;
+  if (n > 0 && !confirm(`Delete node ${name} and its ${n} wire${n === 1 ? '' : 's'}?`)) return false;
+  history.change((m) => removeInstance(m, name));
+  return true;
 }
