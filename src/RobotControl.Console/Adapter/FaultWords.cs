@@ -37,7 +37,15 @@ internal static class FaultWords
         var action = trip.Soft
             ? "arms holding, press the pedal again"
             : trip.Action == SafeState.Hold ? "arms holding" : "motors off";
-        return new FaultView(seconds, $"{Capitalise(what)} — {action}", trip.Check.Name(), trip.Joint, trip.Measured, trip.Limit, trip.Unit, trip.Action.Name());
+        return new FaultView(seconds, $"{Capitalise(what)} — {action}", trip.Check.Name(), trip.Joint, ArmOf(trip.Joint, robot), trip.Measured, trip.Limit, trip.Unit, trip.Action.Name());
+    }
+
+    /// <summary>The arm a subject names ("right.forearm", "right.elbow", "right" -> "right"), or empty.</summary>
+    private static string ArmOf(string name, RobotDefinition robot)
+    {
+        var dot = name.IndexOf('.', StringComparison.Ordinal);
+        var arm = dot < 0 ? name : name[..dot];
+        return robot.Arms.Any(a => a.Name == arm) ? arm : string.Empty;
     }
 
     /// <summary>"right.forearm" -> "right forearm", "right.elbow" -> "right elbow", "right" -> "right"; unknown names as they are.</summary>
@@ -48,14 +56,13 @@ internal static class FaultWords
             return string.Empty;
         }
 
-        var dot = name.IndexOf('.', StringComparison.Ordinal);
-        var arm = dot < 0 ? name : name[..dot];
-        if (!robot.Arms.Any(a => a.Name == arm))
+        var arm = ArmOf(name, robot);
+        if (arm.Length == 0)
         {
             return name;
         }
 
-        return dot < 0 ? arm : $"{arm} {name[(dot + 1)..].Replace('_', ' ')}";
+        return name.Length == arm.Length ? arm : $"{arm} {name[(arm.Length + 1)..].Replace('_', ' ')}";
     }
 
     private static string Capitalise(string text) => text.Length == 0 ? text : char.ToUpperInvariant(text[0]) + text[1..];

@@ -41,11 +41,12 @@ public sealed record PedalView(string Signal, string Drives);
 /// <param name="Words">What happened, for the surgeon, e.g. <c>left forearm module stopped answering — motors off</c>.</param>
 /// <param name="Check">The supervisor's check, e.g. <c>module_silent</c>.</param>
 /// <param name="Subject">The motor or module concerned (<c>left.forearm</c>), or empty.</param>
+/// <param name="Arm">The arm it concerns (<c>left</c>), or empty when it concerns the whole robot (an E-STOP, a host stall).</param>
 /// <param name="Measured">The value measured.</param>
 /// <param name="Limit">The limit crossed.</param>
 /// <param name="Unit">Unit of value and limit.</param>
 /// <param name="Action">The safe state taken: <c>hold</c> or <c>torque_off</c>.</param>
-public sealed record FaultView(double TimeSeconds, string Words, string Check, string Subject, double Measured, double Limit, string Unit, string Action);
+public sealed record FaultView(double TimeSeconds, string Words, string Check, string Subject, string Arm, double Measured, double Limit, string Unit, string Action);
 
 /// <summary>The reachable workspace of every arm, sampled once from the robot file's kinematics.</summary>
 /// <param name="Arms">Arms in robot-file order.</param>

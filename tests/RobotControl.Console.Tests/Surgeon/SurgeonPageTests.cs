@@ -149,6 +149,14 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
             var stage = Definitions.Loading.RobotLoader.Load(Path.Combine(folder, "lb-estop-off.json")).Modules.WatchdogOffMs; // the modules' torque-off stage
             Assert.Contains($"limit {stage} ms", detail, StringComparison.Ordinal);
             Assert.Contains("action torque_off", detail, StringComparison.Ordinal);
+
+            // The faulted arm, and only it, is marked on its hand card and in 3D; the other shows what the stop did to it.
+            await page.Locator("[data-testid=arm-left][data-state=fault]").WaitForAsync();
+            Assert.StartsWith("FAULT · Left forearm module stopped answering", await page.GetByTestId("arm-left").TextContentAsync(), StringComparison.Ordinal);
+            Assert.Equal("stopped, motors off", await page.GetByTestId("arm-right").TextContentAsync());
+            Assert.Equal("left", await page.GetByTestId("surgeon-3d").GetAttributeAsync("data-faulted"));
+            Assert.Contains("faulted", await page.GetByTestId("arm-label-left").GetAttributeAsync("class") ?? string.Empty, StringComparison.Ordinal);
+            Assert.DoesNotContain("faulted", await page.GetByTestId("arm-label-right").GetAttributeAsync("class") ?? string.Empty, StringComparison.Ordinal);
             await page.Context.CloseAsync();
         }
         finally

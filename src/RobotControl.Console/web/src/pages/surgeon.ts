@@ -70,6 +70,8 @@ export function surgeonPage(root: HTMLElement): () => void {
       role.textContent = operator ? '' : 'Watching: E-STOP works from here; take the operator role (top right) to change the scale.';
       faults.show(surgeon.faults);
       hands?.refresh(surgeon.hands);
+      hands?.states(surgeon.faults, status.status.robotState);
+      scene.view.markFaulted(new Set(surgeon.faults.map((f) => f.arm).filter((a) => a !== '')));
     } catch {
       level.textContent = 'NO LINK';
       level.dataset.level = 'NO_LINK';

@@ -1,15 +1,21 @@
-import { el, fmt } from '../dom';
+import { button, el, fmt } from '../dom';
 import { RobotScene } from '../robot3d';
 import { SignalStream, type Frame } from '../stream';
 
-// 3D view: both arms from the robot's URDF, measured joints solid, commanded joints as a translucent ghost; orbit camera.
+// 3D view: both arms from the robot's URDF, measured joints solid, commanded joints as a translucent ghost, each arm
+// labelled; orbit camera with a reset. The view fills the page's width and most of the window's height.
 export function view3dPage(root: HTMLElement): () => void {
-  const canvas = el('canvas', { 'data-testid': 'view3d', width: '960', height: '600' });
+  const canvas = el('canvas', { 'data-testid': 'view3d' });
+  const stage = el('div', { class: 'v3d-stage' }, canvas);
   const readout = el('table', { class: 'kv', 'data-testid': 'joint-values' });
-  root.append(el('p', {}, 'Solid: measured joints. Translucent: commanded. Drag to orbit, wheel to zoom.'), canvas, readout);
+  const reset = button('Reset view', () => view.resetView(), { 'data-testid': 'reset-view' });
+  root.append(el('div', { class: 'toolbar' }, reset, el('span', {}, 'Solid: measured joints. Translucent: commanded. Drag to orbit, wheel to zoom.')), stage, readout);
   const cells = new Map<string, HTMLElement>();
   const view = new RobotScene(canvas, { background: 0xf4f6f8, ghost: true });
-  view.resize(960, 600);
+  const resize = () => view.resize(stage.clientWidth, stage.clientHeight);
+  const observer = new ResizeObserver(resize);
+  observer.observe(stage);
+  resize();
   let names: string[] = [];
 
   const stream = new SignalStream((subscribed, frame: Frame) => {
@@ -35,5 +41,5 @@ export function view3dPage(root: HTMLElement): () => void {
     stream.subscribe(names);
   });
   view.start();
-  return () => { stream.close(); view.dispose(); };
+  return () => { observer.disconnect(); stream.close(); view.dispose(); };
 }

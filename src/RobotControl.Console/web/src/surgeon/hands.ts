@@ -1,10 +1,19 @@
 import { act, api } from '../api';
 import { button, el, fmt } from '../dom';
-import type { HandView, Latest, PedalView } from './types';
+import type { FaultView, HandView, Latest, PedalView } from './types';
 
 // Per hand: clutch, haptic lock, scale factor (changed only while that hand's clutch is held: the server refuses
 // otherwise) and haptic-wall proximity; and the pedals with what each drives.
-export interface HandsPanel { element: HTMLElement; update: (latest: Latest, wallMm: (arm: string) => number | null, operator: boolean) => void; refresh: (hands: HandView[]) => void }
+export interface HandsPanel {
+  element: HTMLElement;
+  update: (latest: Latest, wallMm: (arm: string) => number | null, operator: boolean) => void;
+  refresh: (hands: HandView[]) => void;
+  /** Each arm's state: its own newest fault since the last reset, else what the run level does to every arm. */
+  states: (faults: FaultView[], level: string) => void;
+}
+
+// What a run level means for an arm without a fault of its own.
+const armAt: Record<string, string> = { PEDAL_DOWN: 'following the hand', PEDAL_UP: 'holding', HOMING: 'homing', INIT: 'motors off', E_STOP: 'stopped, motors off' };
 
 export function handsPanel(hands: HandView[], pedals: PedalView[]): HandsPanel {
   const cards = hands.map((hand) => handCard(hand));
@@ -28,6 +37,9 @@ export function handsPanel(hands: HandView[], pedals: PedalView[]): HandsPanel {
     refresh(next) {
       for (const h of next) cards.find((c) => c.hand.arm === h.arm)?.refresh(h);
     },
+    states(faults, level) {
+      for (const c of cards) c.state(faults.filter((f) => f.arm === c.hand.arm).pop() ?? null, level);
+    },
   };
 }
 
@@ -47,11 +59,13 @@ function handCard(initial: HandView) {
   const plus = button('+', () => void set((hand.scale ?? 1) + 0.1), { 'data-testid': `scale-up-${arm}`, 'aria-label': `larger ${arm} scale` });
   const apply = button('Set', () => void set(Number(input.value)), { 'data-testid': `scale-set-${arm}` });
   const hint = el('span', { class: 'dim', 'data-testid': `scale-hint-${arm}` });
+  const armState = el('b', { class: 'arm-state', 'data-testid': `arm-${arm}` }, '—');
   const wall = el('b', { 'data-testid': `wall-${arm}` }, '—');
   const meter = el('meter', { min: '0', max: '1', value: '0', 'aria-label': `${arm} wall force` });
   const element = el('div', { class: 'hand', 'data-testid': `hand-${arm}` },
     el('h2', {}, `${arm[0].toUpperCase()}${arm.slice(1)} hand`),
     el('div', { class: 'hand-grid' },
+      el('span', {}, 'Arm'), armState,
       el('span', {}, 'Clutch'), clutch,
       el('span', {}, 'Haptic lock'), lock,
       el('span', {}, 'Scale'), el('span', { class: 'scale-row' }, scale, minus, plus, input, apply),
@@ -61,6 +75,11 @@ function handCard(initial: HandView) {
   return {
     hand: initial,
     element,
+    state(fault: FaultView | null, level: string) {
+      armState.textContent = fault ? `FAULT · ${fault.words}` : armAt[level] ?? level;
+      armState.dataset.state = fault ? 'fault' : level;
+      element.classList.toggle('faulted', fault !== null);
+    },
     refresh(next: HandView) {
       hand = next;
       if (document.activeElement !== input) scale.textContent = fmt(next.scale ?? Number.NaN, 2);
