@@ -51,6 +51,15 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
             return n; }");
         Assert.True(drawn > 5000, $"only {drawn} pixels of the 3D view differ from its background");
         await page.Locator("[data-testid=run-level][data-level=PEDAL_DOWN]").WaitForAsync(new() { Timeout = 20000 });
+
+        // Legible from 2 m: the run level, the E-STOP label and each arm's state at least 48 px.
+        foreach (var selector in new[] { "[data-testid=run-level]", "[data-testid=surgeon-estop]", "[data-testid=arm-left]", "[data-testid=arm-right]" })
+        {
+            var px = await page.Locator(selector).EvaluateAsync<double>("e => parseFloat(getComputedStyle(e).fontSize)");
+            Assert.True(px >= 48, $"{selector}: {px} px");
+        }
+
+        Assert.Equal("FOLLOWING", await page.GetByTestId("arm-right").TextContentAsync());
         if (Environment.GetEnvironmentVariable("CONSOLE_SCREENSHOTS") is { Length: > 0 } dir)
         {
             Directory.CreateDirectory(dir);
@@ -152,8 +161,9 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
 
             // The faulted arm, and only it, is marked on its hand card and in 3D; the other shows what the stop did to it.
             await page.Locator("[data-testid=arm-left][data-state=fault]").WaitForAsync();
-            Assert.StartsWith("FAULT · Left forearm module stopped answering", await page.GetByTestId("arm-left").TextContentAsync(), StringComparison.Ordinal);
-            Assert.Equal("stopped, motors off", await page.GetByTestId("arm-right").TextContentAsync());
+            Assert.Equal("FAULT", await page.GetByTestId("arm-left").TextContentAsync());
+            Assert.StartsWith("Left forearm module stopped answering", await page.GetByTestId("arm-why-left").TextContentAsync(), StringComparison.Ordinal);
+            Assert.Equal("STOPPED", await page.GetByTestId("arm-right").TextContentAsync());
             Assert.Equal("left", await page.GetByTestId("surgeon-3d").GetAttributeAsync("data-faulted"));
             Assert.Contains("faulted", await page.GetByTestId("arm-label-left").GetAttributeAsync("class") ?? string.Empty, StringComparison.Ordinal);
             Assert.DoesNotContain("faulted", await page.GetByTestId("arm-label-right").GetAttributeAsync("class") ?? string.Empty, StringComparison.Ordinal);
@@ -171,7 +181,7 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
         await page.Locator("[data-testid=run-level][data-level=E_STOP]").WaitForAsync(new() { Timeout = 10000 });
         Assert.Equal("E_STOP", console.Session.Status.RobotState);
         await Expect(page.GetByTestId("fault"), "Emergency stop pressed — motors off");
-        using var http = await console.Client("estop-checker", operate: true);
+        using var http = await console.Client("estop-checker", operate: false);
         await SurgeonFixture.Until(() => !console.Session.Status.TorqueOn, "the robot layer to turn the motors off");
 
         // The modules' own torque_enable, polled over the bus (each module five times a second).
@@ -181,9 +191,19 @@ public sealed class SurgeonPageTests(SurgeonFixture console)
         Assert.NotEmpty(motors);
         Assert.All(motors, m => Assert.False(m.GetProperty("torqueOn").GetBoolean(), $"{m.GetProperty("name")} still has torque"));
 
-        (await http.PostAsync("api/faults/clear", null)).EnsureSuccessStatusCode();
-        (await http.PostAsJsonAsync("api/torque", new { on = true })).EnsureSuccessStatusCode();
+        // Back from the view itself: Reset (shown at E-STOP only), then Home the arms (at INIT only), each confirmed.
+        var asked = new List<string>();
+        page.Dialog += (_, dialog) => { asked.Add(dialog.Message); _ = dialog.AcceptAsync(); };
+        Assert.True(await page.GetByTestId("surgeon-home").IsHiddenAsync());
+        await page.GetByTestId("surgeon-reset").ClickAsync();
+        await page.Locator("[data-testid=run-level][data-level=INIT]").WaitForAsync(new() { Timeout = 10000 });
+        Assert.True(await page.GetByTestId("surgeon-reset").IsHiddenAsync());
+        await Expect(page.GetByTestId("arm-right"), "MOTORS OFF");
+        await page.GetByTestId("surgeon-home").ClickAsync();
         await SurgeonFixture.Until(() => console.Session.Status.RobotState is "PEDAL_UP" or "PEDAL_DOWN", "the robot to come back to PEDAL_UP", 60);
+        Assert.Equal(2, asked.Count);
+        Assert.StartsWith("Reset:", asked[0], StringComparison.Ordinal);
+        Assert.StartsWith("Torque on:", asked[1], StringComparison.Ordinal);
         await page.Context.CloseAsync();
     }
 

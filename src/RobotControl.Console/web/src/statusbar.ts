@@ -51,6 +51,20 @@ export function faultWords(status: SessionStatus, surgeon: SurgeonView): string[
   return [...surgeon.faults.slice().reverse().map((f) => f.words), ...status.faults.filter((f) => !f.startsWith('trip:')).map(words)];
 }
 
+/** Reset, after a confirmation: the latched faults cleared (the operator's; the bar and the surgeon's view). */
+export function resetFaults(): void {
+  if (confirm('Reset: clear the latched faults. After an E-STOP the motors stay off and the arms must be homed (torque on). Reset now?')) {
+    void act(() => api('POST', '/faults/clear'));
+  }
+}
+
+/** Torque on, after a confirmation: the motors driven, the arms homed first when their positions are in doubt. */
+export function torqueOn(): void {
+  if (confirm('Torque on: drive the motors (the arms home first if their positions are in doubt). Turn torque on now?')) {
+    void act(() => api('POST', '/torque', { on: true }));
+  }
+}
+
 export function statusBar(bar: HTMLElement, unreachable: HTMLElement): void {
   const level = el('span', { class: 'bar-level', 'data-testid': 'bar-level', 'data-level': 'NO_LINK' }, '…');
   const motors = el('span', { class: 'bar-motors', 'data-testid': 'bar-motors' }, 'motors …');
@@ -61,16 +75,8 @@ export function statusBar(bar: HTMLElement, unreachable: HTMLElement): void {
     await poll();
     return { message: 'this console is the operator' };
   }), { id: 'claim' });
-  const reset = button('Reset', () => {
-    if (confirm('Reset: clear the latched faults. After an E-STOP the motors stay off and the arms must be homed (torque on). Reset now?')) {
-      void act(() => api('POST', '/faults/clear'));
-    }
-  }, { 'data-testid': 'bar-reset', 'data-operator': '' });
-  const torque = button('Torque on', () => {
-    if (confirm('Torque on: drive the motors (the arms home first if their positions are in doubt). Turn torque on now?')) {
-      void act(() => api('POST', '/torque', { on: true }));
-    }
-  }, { 'data-testid': 'bar-torque-on', 'data-operator': '' });
+  const reset = button('Reset', resetFaults, { 'data-testid': 'bar-reset', 'data-operator': '' });
+  const torque = button('Torque on', torqueOn, { 'data-testid': 'bar-torque-on', 'data-operator': '' });
   const estop = button('E-STOP', emergencyStop, { class: 'estop bar-estop', 'data-testid': 'bar-estop', 'aria-keyshortcuts': 'Space Escape', title: 'E-STOP (Space or Esc, from every page)' });
   estop.append(el('kbd', {}, 'Space / Esc'));
   bar.append(level, motors, faults, el('span', { class: 'bar-role' }, role, claim), reset, torque, estop);

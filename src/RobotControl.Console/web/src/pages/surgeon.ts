@@ -1,6 +1,6 @@
 import { api, type StatusReply } from '../api';
-import { el } from '../dom';
-import { emergencyStop } from '../statusbar';
+import { button, el } from '../dom';
+import { emergencyStop, resetFaults, torqueOn } from '../statusbar';
 import { SignalStream, type Frame } from '../stream';
 import { faultsPanel } from '../surgeon/faults';
 import { handsPanel, type HandsPanel } from '../surgeon/hands';
@@ -12,8 +12,8 @@ import { videoPanel } from '../surgeon/video';
 // endoscope video, the run level large with the pedals, per hand clutch, lock, scale and wall proximity, an E-STOP
 // button (Space or Esc) and the faults in plain words.
 const levelWords: Record<string, [string, string]> = {
-  E_STOP: ['E-STOP', 'Emergency stop: the robot is stopped. Clear faults and home on the bus page to continue.'],
-  INIT: ['INIT', 'Motors off: torque on homes the arms.'],
+  E_STOP: ['E-STOP', 'Emergency stop: the robot is stopped. Reset clears the faults; then home the arms.'],
+  INIT: ['INIT', 'Motors off: Home the arms turns the motors on and homes them.'],
   HOMING: ['HOMING', 'Homing the joints from their pots.'],
   PEDAL_UP: ['PEDAL_UP', 'Holding: press the pedal to operate.'],
   PEDAL_DOWN: ['PEDAL_DOWN', 'Operating: the arms follow the hands.'],
@@ -22,6 +22,9 @@ const levelWords: Record<string, [string, string]> = {
 export function surgeonPage(root: HTMLElement): () => void {
   const level = el('div', { class: 'level', 'data-testid': 'run-level' }, '…');
   const levelNote = el('div', { class: 'level-note', 'data-testid': 'run-level-note' });
+  // Getting back from a stop without leaving the view: Reset at E-STOP, then Home the arms at INIT (each confirmed).
+  const reset = button('Reset', resetFaults, { class: 'recover', 'data-testid': 'surgeon-reset', 'data-operator': '', hidden: '' });
+  const home = button('Home the arms', torqueOn, { class: 'recover', 'data-testid': 'surgeon-home', 'data-operator': '', hidden: '' });
   const role = el('div', { class: 'role-note', 'data-testid': 'surgeon-role' });
   const estop = el('button', { type: 'button', class: 'estop big', 'data-testid': 'surgeon-estop', 'aria-keyshortcuts': 'Space Escape' },
     'E-STOP', el('kbd', {}, 'Space / Esc'));
@@ -31,7 +34,7 @@ export function surgeonPage(root: HTMLElement): () => void {
   const side = el('div', { class: 's-side' }, video.element);
   const faults = faultsPanel();
   root.append(el('div', { class: 'surgeon' },
-    el('div', { class: 's-top' }, el('div', { class: 's-level' }, level, levelNote), role, estop),
+    el('div', { class: 's-top' }, el('div', { class: 's-level' }, level, reset, home, levelNote), role, estop),
     el('div', { class: 's-main' }, stage, side),
     faults.element));
 
@@ -66,6 +69,8 @@ export function surgeonPage(root: HTMLElement): () => void {
       level.textContent = word;
       level.dataset.level = status.status.robotState;
       levelNote.textContent = note;
+      reset.hidden = status.status.robotState !== 'E_STOP';
+      home.hidden = status.status.robotState !== 'INIT';
       operator = status.operator.you;
       role.textContent = operator ? '' : 'Watching: E-STOP works from here; take the operator role (top right) to change the scale.';
       faults.show(surgeon.faults);

@@ -12,8 +12,11 @@ export interface HandsPanel {
   states: (faults: FaultView[], level: string) => void;
 }
 
-// What a run level means for an arm without a fault of its own.
-const armAt: Record<string, string> = { PEDAL_DOWN: 'following the hand', PEDAL_UP: 'holding', HOMING: 'homing', INIT: 'motors off', E_STOP: 'stopped, motors off' };
+// What a run level means for an arm without a fault of its own: one word legible from 2 m, and a line on what it means.
+const armAt: Record<string, [string, string]> = {
+  PEDAL_DOWN: ['FOLLOWING', 'following the hand'], PEDAL_UP: ['HOLDING', 'holding: press the pedal'], HOMING: ['HOMING', 'homing from the pots'],
+  INIT: ['MOTORS OFF', 'not homed: Home the arms'], E_STOP: ['STOPPED', 'motors off after the E-STOP'],
+};
 
 export function handsPanel(hands: HandView[], pedals: PedalView[]): HandsPanel {
   const cards = hands.map((hand) => handCard(hand));
@@ -59,13 +62,14 @@ function handCard(initial: HandView) {
   const plus = button('+', () => void set((hand.scale ?? 1) + 0.1), { 'data-testid': `scale-up-${arm}`, 'aria-label': `larger ${arm} scale` });
   const apply = button('Set', () => void set(Number(input.value)), { 'data-testid': `scale-set-${arm}` });
   const hint = el('span', { class: 'dim', 'data-testid': `scale-hint-${arm}` });
-  const armState = el('b', { class: 'arm-state', 'data-testid': `arm-${arm}` }, '—');
+  const armState = el('div', { class: 'arm-state', 'data-testid': `arm-${arm}` }, '—');
+  const armWhy = el('div', { class: 'arm-why', 'data-testid': `arm-why-${arm}` });
   const wall = el('b', { 'data-testid': `wall-${arm}` }, '—');
   const meter = el('meter', { min: '0', max: '1', value: '0', 'aria-label': `${arm} wall force` });
   const element = el('div', { class: 'hand', 'data-testid': `hand-${arm}` },
-    el('h2', {}, `${arm[0].toUpperCase()}${arm.slice(1)} hand`),
+    el('h2', {}, `${arm[0].toUpperCase()}${arm.slice(1)} arm`),
+    armState, armWhy,
     el('div', { class: 'hand-grid' },
-      el('span', {}, 'Arm'), armState,
       el('span', {}, 'Clutch'), clutch,
       el('span', {}, 'Haptic lock'), lock,
       el('span', {}, 'Scale'), el('span', { class: 'scale-row' }, scale, minus, plus, input, apply),
@@ -76,7 +80,9 @@ function handCard(initial: HandView) {
     hand: initial,
     element,
     state(fault: FaultView | null, level: string) {
-      armState.textContent = fault ? `FAULT · ${fault.words}` : armAt[level] ?? level;
+      const [word, why] = fault ? ['FAULT', fault.words] : armAt[level] ?? [level, ''];
+      armState.textContent = word;
+      armWhy.textContent = why;
       armState.dataset.state = fault ? 'fault' : level;
       element.classList.toggle('faulted', fault !== null);
     },
