@@ -53,7 +53,7 @@ internal sealed class VirtualAxes
 
     /// <summary>Gives the firmware on <paramref name="bus"/> the Hall code of <paramref name="axis"/>'s rotor as it is now.</summary>
     public static void SetHall(nint bus, VirtualAxis axis) =>
-        _ = FirmwareHost.SetHall(bus, axis.ModuleIndex, axis.Config.Channel, HallSensors.Code(axis.Model.RotorAngle, axis.Motor.PolePairs));
+        _ = FirmwareHost.SetHall(bus, axis.ModuleIndex, axis.Config.Channel, (byte)(axis.HallFailedCode ?? HallSensors.Code(axis.Model.RotorAngle, axis.Motor.PolePairs)));
 
     /// <summary>Steps every model <paramref name="dt"/> seconds with the PWM its firmware applies, then feeds the sensors.</summary>
     public void Step(nint bus, double dt)
@@ -66,8 +66,16 @@ internal sealed class VirtualAxes
             axis.DriverEnabled = enabled;
             axis.Model.Step(pwm / 255.0, enabled, dt);
 
-            // Hall edges in order, as the pin interrupts would see them, however far the rotor turned.
+            // Hall edges in order, as the pin interrupts would see them, however far the rotor turned; a failed
+            // connector holds its one code (the firmware sees an edge only when the lines change).
             var sector = Sector(axis);
+            if (axis.HallFailedCode is { } stuck)
+            {
+                _ = FirmwareHost.SetHall(bus, axis.ModuleIndex, axis.Config.Channel, (byte)stuck);
+                axis.LastSector = sector;
+                continue;
+            }
+
             var direction = Math.Sign(sector - axis.LastSector);
             var guard = 0;
             while (axis.LastSector != sector && guard++ < 64)

@@ -8,6 +8,8 @@ namespace RobotControl.Simulation;
 /// <summary>One simulated motor with its drivetrain, Hall sensors, current sense and pot: the truth a test compares against.</summary>
 public sealed class VirtualAxis
 {
+    private int? _hallFailedCode;
+
     internal VirtualAxis(MotorConfig config, int moduleIndex, DrivetrainModel model, PotVariation potVariation)
     {
         Config = config;
@@ -62,6 +64,27 @@ public sealed class VirtualAxis
     /// Null: the pot follows the joint (with its non-linearity and noise).
     /// </summary>
     public int? PotFailedRaw { get; set; }
+
+    /// <summary>
+    /// A failed Hall connector or sensor: the module's three Hall lines read this fixed 3-bit code whatever the rotor
+    /// does (7: the connector off, its pull-ups read 111; 0: the lines shorted to ground; 1..6 a stuck sensor). The
+    /// firmware sees the change to it as one Hall edge (an invalid code latches its Hall error) and then no edges
+    /// while it lasts. Null: the lines follow the rotor.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">Not a 3-bit code (0..7).</exception>
+    public int? HallFailedCode
+    {
+        get => _hallFailedCode;
+        set
+        {
+            if (value is < 0 or > 7)
+            {
+                throw new ArgumentOutOfRangeException(nameof(value), value, $"{Config.FullName}: a Hall code is 3 bits (0..7)");
+            }
+
+            _hallFailedCode = value;
+        }
+    }
 
     internal int ModuleIndex { get; }
 

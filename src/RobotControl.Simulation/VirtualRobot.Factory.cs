@@ -55,6 +55,13 @@ public sealed partial class VirtualRobot
         _plugs.Set(index, connected: false);
     }
 
+    /// <summary>
+    /// Cuts module <paramref name="moduleId"/>'s power once <paramref name="bytes"/> more bytes are written into its FRAM:
+    /// the record being written is torn there (a power cut mid-way through a parameter write). <see cref="PowerCycle"/>
+    /// powers it again, from what its FRAM kept.
+    /// </summary>
+    public void CutPowerAfterFramBytes(byte moduleId, int bytes) => FirmwareHost.Check(FirmwareHost.FramCutAfter(_bus, _plugs.ConnectedIndex(moduleId, "cut the power of"), bytes), "rcfw_fram_cut_after");
+
     /// <summary>The ID module <paramref name="moduleId"/> (the robot file's) answers at now, read from its table (not over the bus).</summary>
     /// <exception cref="InvalidOperationException">The module is not plugged in.</exception>
     public byte BusId(byte moduleId)

@@ -324,7 +324,7 @@ public sealed class PotCalibrator
         var stopping = HardwareErrors.Hall | HardwareErrors.BusHold;
         if (!(status & stopping).IsNone)
         {
-            var motors = string.Join(", ", _plan.Motors.Select(m => $"{m.FullName} {(HardwareErrors)Field("motor_error", m.Channel)}"));
+            var motors = string.Join("; ", _plan.Motors.Select(m => $"{m.FullName}: {(HardwareErrors)Field("motor_error", m.Channel)}{BadHallStates(m)}"));
             throw new IOException($"{What}: latched {status & stopping} during the sweep ({motors}): motors off; find the cause (a Hall wire or sensor, a stalled bus) and run the calibration again");
         }
 
@@ -344,6 +344,14 @@ public sealed class PotCalibrator
             }
         }
     }
+
+    /// <summary>The motor's invalid or skipped Hall states since its module's reset, for a line (empty when none).</summary>
+    private string BadHallStates(MotorConfig m) => Field("hall_error_count", m.Channel) switch
+    {
+        0 => string.Empty,
+        1 => ", 1 invalid or skipped Hall state",
+        var n => $", {n} invalid or skipped Hall states",
+    };
 
     private void Home(int mask)
     {

@@ -66,6 +66,9 @@ internal static unsafe partial class FirmwareHost
     [LibraryImport(Library, EntryPoint = "rcfw_power_off")]
     public static partial int PowerOff(nint bus, int module);
 
+    [LibraryImport(Library, EntryPoint = "rcfw_fram_cut_after")]
+    public static partial int FramCutAfter(nint bus, int module, int bytes);
+
     [LibraryImport(Library, EntryPoint = "rcfw_reset")]
     public static partial int Reset(nint bus, int module, byte cause);
 

@@ -56,12 +56,15 @@ internal sealed class CommissionCommand : ICliCommand
             }
 
             var factoryBaud = ModuleParameters.BaudFromCode((int)ControlTable.Firmware["baud_rate"].Default);
-            using var client = Open(line, factoryBaud);
+            RobotConnection.CheckTransport(line.Transport(factoryBaud));
+            using var client = new BusClient(new ReopenableLink(() => LinkFactory.Open(line.Transport(factoryBaud))), TimeProvider.System, line.Options);
             var setup = new CommissionSetup(robot, record, path, Console.In, parse.GetValue(yes), new CommissionClock(TimeProvider.System), (baud, id) =>
-            {
-                using var other = Open(line, baud);
-                return other.Ping(id, out _).Outcome == ReplyOutcome.Ok;
-            });
+                ((ReopenableLink)client.Link).Released(() =>
+                {
+                    // The port released first: one process owns it, and its baud is the device's, not a descriptor's.
+                    using var other = Open(line, baud);
+                    return other.Ping(id, out _).Outcome == ReplyOutcome.Ok;
+                }));
             return new Commissioner(setup, client, parse.InvocationConfiguration.Output).Run();
         }));
         return command;

@@ -46,7 +46,8 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
                 GiveId(module, what);
             }
 
-            Record(module, what, WriteParameters(module));
+            var (values, info) = WriteParameters(module, what);
+            Record(module, what, values, info);
         }
 
         output.WriteLine($"unit {setup.Unit.Unit} commissioned: {order.Count} modules ({setup.UnitPath})");
@@ -129,7 +130,8 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
         throw new IOException($"{what}: written ID {module.Id} but nothing answers there; power-cycle the module and run commission again");
     }
 
-    private List<ParameterValue> WriteParameters(ModuleDefinition module)
+    /// <summary>Writes the module's parameters, reads its identity (at the factory baud), then moves it to the robot file's baud if that differs.</summary>
+    private (List<ParameterValue> Values, PingInfo Info) WriteParameters(ModuleDefinition module, string what)
     {
         var values = ModuleParameters.For(setup.Robot, module, Table).Where(p => p.Field.Name != "baud_rate").ToList();
         try
@@ -139,6 +141,11 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
         catch (Exception ex) when (ex is ArgumentException or IOException)
         {
             throw new IOException($"commissioning {module.Name}: {ex.Message}; the module is not recorded: fix it and run commission again", ex);
+        }
+
+        if (client.Ping(module.Id, out var info).Outcome != ReplyOutcome.Ok)
+        {
+            throw new IOException($"{what}: silent after its parameters were written; check its power and run commission again");
         }
 
         var baud = setup.Robot.Modules.BaudRate;
@@ -155,17 +162,11 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
             values.Add(new ParameterValue(Table["baud_rate"], 0, code, $"{baud} baud"));
         }
 
-        return values;
+        return (values, info);
     }
 
-    private void Record(ModuleDefinition module, string what, List<ParameterValue> values)
+    private void Record(ModuleDefinition module, string what, List<ParameterValue> values, PingInfo info)
     {
-        var info = default(PingInfo);
-        if (setup.Robot.Modules.BaudRate == FactoryBaud && client.Ping(module.Id, out info).Outcome != ReplyOutcome.Ok)
-        {
-            throw new IOException($"{what}: silent after its parameters were written; check its power and run commission again");
-        }
-
         setup.Unit.Modules.Add(new UnitModule
         {
             Id = module.Id,
