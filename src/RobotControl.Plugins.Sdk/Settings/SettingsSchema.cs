@@ -182,22 +182,23 @@ public sealed class SettingsSchema
     }
 
     /// <summary>
-    /// The settings of <paramref name="settings"/> that a graph file must hold to give them: those that differ from
-    /// their <see cref="SettingDescriptor.DefaultValue"/>, and the required ones. A file written with them alone reads
-    /// back to the same settings, and says only what its author chose.
+    /// The settings of <paramref name="settings"/> a graph file holds: those that differ from their
+    /// <see cref="SettingDescriptor.DefaultValue"/>, the required ones, and those named in <paramref name="written"/>
+    /// (what the file being rewritten gave, even at its default). A file written with them reads back to the same
+    /// settings and says only what its author chose.
     /// </summary>
-    public IReadOnlyList<SettingDescriptor> Given(PluginSettings settings)
+    public IReadOnlyList<SettingDescriptor> Given(PluginSettings settings, IReadOnlyCollection<string>? written = null)
     {
         ArgumentNullException.ThrowIfNull(settings);
-        return [.. Settings.Where(s => s.Required || !Equals(s.Property.GetValue(settings), s.DefaultValue))];
+        return [.. Settings.Where(s => s.Required || (written?.Contains(s.JsonName) ?? false) || !Equals(s.Property.GetValue(settings), s.DefaultValue))];
     }
 
-    /// <summary>Writes the settings of <paramref name="settings"/> that differ from their defaults (<see cref="Given"/>) as a JSON object.</summary>
-    public void Write(Utf8JsonWriter writer, PluginSettings settings)
+    /// <summary>Writes the settings of <paramref name="settings"/> that <see cref="Given"/> names as a JSON object.</summary>
+    public void Write(Utf8JsonWriter writer, PluginSettings settings, IReadOnlyCollection<string>? written = null)
     {
         ArgumentNullException.ThrowIfNull(writer);
         writer.WriteStartObject();
-        foreach (var s in Given(settings))
+        foreach (var s in Given(settings, written))
         {
             var value = s.Property.GetValue(settings);
             writer.WritePropertyName(s.JsonName);

@@ -33,4 +33,18 @@ public sealed record GraphDocument(
 /// <param name="Name">Instance name.</param>
 /// <param name="Type">Plug-in type name.</param>
 /// <param name="Settings">Validated settings (null for a type without settings).</param>
-public sealed record InstanceSpec(string Name, string Type, PluginSettings? Settings);
+public sealed record InstanceSpec(string Name, string Type, PluginSettings? Settings)
+{
+    /// <summary>
+    /// The settings the file gave by name (even at their defaults), or null when it had no <c>settings</c> object:
+    /// written back so when the file is saved. How the file was written, not what the graph is: equality leaves it out.
+    /// </summary>
+    public IReadOnlyList<string>? Written { get; init; }
+
+    /// <inheritdoc />
+    public bool Equals(InstanceSpec? other) =>
+        other is not null && Name == other.Name && Type == other.Type && Equals(Settings, other.Settings);
+
+    /// <inheritdoc />
+    public override int GetHashCode() => HashCode.Combine(Name, Type, Settings);
+}

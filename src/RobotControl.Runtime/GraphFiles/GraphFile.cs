@@ -105,7 +105,7 @@ public static class GraphFile
         }
     }
 
-    /// <summary>Writes <paramref name="document"/> as a graph file (the settings that differ from their defaults, wires in order).</summary>
+    /// <summary>Writes <paramref name="document"/> as a graph file (the settings the file gave or that differ from their defaults, wires in order).</summary>
     public static void Save(GraphDocument document, string path)
     {
         ArgumentException.ThrowIfNullOrEmpty(path);
@@ -134,10 +134,10 @@ public static class GraphFile
                 writer.WriteStartObject();
                 writer.WriteString("name", instance.Name);
                 writer.WriteString("type", instance.Type);
-                if (instance.Settings is not null && SettingsSchema.For(instance.Settings.GetType()).Given(instance.Settings).Count > 0)
+                if (instance.Settings is not null && (instance.Written is not null || SettingsSchema.For(instance.Settings.GetType()).Given(instance.Settings).Count > 0))
                 {
                     writer.WritePropertyName("settings");
-                    SettingsSchema.For(instance.Settings.GetType()).Write(writer, instance.Settings);
+                    SettingsSchema.For(instance.Settings.GetType()).Write(writer, instance.Settings, instance.Written);
                 }
 
                 writer.WriteEndObject();
@@ -337,7 +337,10 @@ public static class GraphFile
             {
                 var plugin = type.Create(settings, new PluginContext(name, robot, time, baseDirectory) { DeviceOpener = catalog.DeviceOpener });
                 graph.Add(plugin);
-                specs.Add(new InstanceSpec(name, typeName, settings));
+                specs.Add(new InstanceSpec(name, typeName, settings)
+                {
+                    Written = settingsJson.ValueKind == JsonValueKind.Object ? [.. settingsJson.EnumerateObject().Select(p => p.Name)] : null,
+                });
             }
             catch (SettingsException ex)
             {

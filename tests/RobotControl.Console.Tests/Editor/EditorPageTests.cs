@@ -113,6 +113,43 @@ public sealed class EditorPageTests(EditorFixture console)
     }
 
     [Fact]
+    public async Task Load_add_a_node_wire_it_and_save_changes_the_file_by_that_node_and_wire_alone()
+    {
+        var page = await Open();
+        await page.GetByTestId("graph-list").SelectOptionAsync(EditorFixture.HandWritten);
+        await page.GetByTestId("load").ClickAsync();
+        await page.Locator("#message").Filter(new() { HasTextString = $"loaded {EditorFixture.HandWritten}" }).WaitForAsync();
+        await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync();
+        await page.Locator(".ged-type[data-type=viscous_damping]").ClickAsync();
+        await page.Locator(".drawflow-node[data-instance=viscous_damping_1]").WaitForAsync();
+        await Drag(page, "touch_right.x", "viscous_damping_1.x");
+        await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync();
+        await page.Locator("#claim").ClickAsync();
+        await page.Locator("#role[data-role=operator]").WaitForAsync();
+        await page.GetByTestId("file-name").FillAsync("round-trip.json");
+        await page.GetByTestId("save").ClickAsync();
+        await page.Locator("#message.ok").Filter(new() { HasTextString = "saved round-trip.json" }).WaitForAsync();
+        await Close(page);
+
+        var original = JsonNode.Parse(File.ReadAllText(Path.Combine(console.Graphs, EditorFixture.HandWritten)))!.AsObject();
+        var saved = JsonNode.Parse(File.ReadAllText(Path.Combine(console.Graphs, "round-trip.json")))!.AsObject();
+        var added = saved["instances"]!.AsArray().Where(i => !original["instances"]!.AsArray().Any(o => JsonNode.DeepEquals(o, i))).ToList();
+        Assert.True(added.Count == 1, string.Join("\n", added.Select(a => a!.ToJsonString())));
+        Assert.Equal("""{"name":"viscous_damping_1","type":"viscous_damping","settings":{}}""", added[0]!.ToJsonString()); // every setting at its default
+        Assert.Equal(original["instances"]!.AsArray().Count + 1, saved["instances"]!.AsArray().Count);
+        var newWires = saved["wires"]!.AsArray().Where(w => !original["wires"]!.AsArray().Any(o => JsonNode.DeepEquals(o, w))).ToList();
+        Assert.Equal("""{"from":"touch_right.x","to":"viscous_damping_1.x"}""", Assert.Single(newWires)!.ToJsonString());
+        Assert.Equal(original["wires"]!.AsArray().Count + 1, saved["wires"]!.AsArray().Count);
+        foreach (var (key, value) in original.Where(p => p.Key is not "instances" and not "wires" and not "layout"))
+        {
+            Assert.True(JsonNode.DeepEquals(value, saved[key]), $"{key}: {value?.ToJsonString()} became {saved[key]?.ToJsonString()}");
+        }
+
+        // The one other field: where the editor drew each node (a file without it is laid out when loaded).
+        Assert.Equal(["instances", "layout", "wires"], saved.Select(p => p.Key).Except(original.Select(p => p.Key).Where(k => k is not "instances" and not "wires")).Order());
+    }
+
+    [Fact]
     public async Task An_invalid_setting_and_an_invalid_wire_show_their_problem_and_block_start()
     {
         var page = await Open();

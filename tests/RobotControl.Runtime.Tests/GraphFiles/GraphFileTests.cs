@@ -44,11 +44,29 @@ public sealed class GraphFileTests
         Assert.Contains("\"reference_x_mm\": 3", saved, StringComparison.Ordinal);
         Assert.Contains("\"delayed\": true", saved, StringComparison.Ordinal);
 
-        // Only what the author chose: a setting at its default is not written (b's samples, a's ratio were given as
-        // 0.25 and are), the required script always is.
+        // Only what the author chose: a's four as the file gave them, the required script; b's settings at their
+        // defaults, which the file did not name, are not expanded.
         var written = System.Text.Json.Nodes.JsonNode.Parse(saved)!["instances"]!.AsArray();
         Assert.Equal(["ratio", "reference_x_mm", "mode", "script"], written[0]!["settings"]!.AsObject().Select(p => p.Key));
         Assert.Equal(["script"], written[1]!["settings"]!.AsObject().Select(p => p.Key));
+    }
+
+    [Fact]
+    public void Saving_keeps_a_setting_the_file_gave_at_its_default_and_leaves_out_the_defaults_it_did_not_name()
+    {
+        const string json = """
+            {
+              "schema": "robotcontrol/graph/1",
+              "instances": [ { "name": "a", "type": "example", "settings": { "ratio": 0.5, "samples": 3 } } ],
+              "wires": []
+            }
+            """;
+
+        var saved = GraphFile.ToJson(GraphFile.LoadFromText(json, "/tmp/graph.json", Catalog, TimeProvider.System).Document);
+
+        var settings = System.Text.Json.Nodes.JsonNode.Parse(saved)!["instances"]![0]!["settings"]!.AsObject();
+        Assert.Equal(["ratio", "samples", "script"], settings.Select(p => p.Key)); // ratio 0.5 is the default, given: kept
+        Assert.Equal(0.5, (double)settings["ratio"]!);
     }
 
     [Fact]
