@@ -93,7 +93,7 @@ public sealed partial class BringUpPageTests : IDisposable
         FactoryBench.Commission(sim, transport, "lb-0302", _units);
         using var console = Serve(transport, "lb-0302", out var url);
         await using var browser = await Browser.LaunchAsync();
-        var operating = await browser.Open(url, operate: true);
+        var operating = await browser.Open(url, operate: true, axe: true);
         var watching = await browser.Open(url, operate: false);
 
         await Assertions.Expect(watching.GetByTestId("bringup-calibrate")).ToBeDisabledAsync();
@@ -134,6 +134,7 @@ public sealed partial class BringUpPageTests : IDisposable
         }
 
         Assert.All(Unit("lb-0302")["modules"]!.AsArray(), m => Assert.Null(m!["pot_calibration"]));
+        Assert.Empty(await Browser.SeriousViolations(operating)); // the page with its table, log and stop line
     }
 
     /// <summary>Starts the bring-up console on <paramref name="transport"/> for <paramref name="unit"/>; <paramref name="url"/> is the page it prints.</summary>
@@ -183,10 +184,14 @@ public sealed partial class BringUpPageTests : IDisposable
             return new Browser(playwright, await playwright.Chromium.LaunchAsync(new() { ExecutablePath = DebianChromium.Path, Headless = true, Args = DebianChromium.Args }));
         }
 
-        /// <summary>A console on <paramref name="url"/>: with <paramref name="operate"/>, it takes the operator role; without, it watches the operator opened before it.</summary>
-        public async Task<IPage> Open(Uri url, bool operate)
+        /// <summary>
+        /// A console on <paramref name="url"/>: with <paramref name="operate"/>, it takes the operator role; without, it
+        /// watches the operator opened before it. With <paramref name="axe"/>, the browser lets the test's copy of
+        /// axe-core past the console's Content-Security-Policy (<see cref="SeriousViolations"/>).
+        /// </summary>
+        public async Task<IPage> Open(Uri url, bool operate, bool axe = false)
         {
-            var page = await (await _browser.NewContextAsync()).NewPageAsync();
+            var page = await (await _browser.NewContextAsync(new() { ViewportSize = new() { Width = 1920, Height = 1080 }, BypassCSP = axe })).NewPageAsync();
             await page.GotoAsync(url.ToString());
             if (operate)
             {
@@ -195,6 +200,13 @@ public sealed partial class BringUpPageTests : IDisposable
 
             await Assertions.Expect(page.Locator("#role")).ToHaveTextAsync(operate ? "operator" : "watching: held by another console", new() { Timeout = Wait });
             return page;
+        }
+
+        /// <summary>axe-core (the front end's dev dependency) on <paramref name="page"/>: its serious and critical violations.</summary>
+        public static async Task<string[]> SeriousViolations(IPage page)
+        {
+            await page.AddScriptTagAsync(new() { Path = AxeCheck.ScriptPath });
+            return await page.EvaluateAsync<string[]>(AxeCheck.SeriousViolations);
         }
 
         public async ValueTask DisposeAsync()
