@@ -42,6 +42,9 @@ public sealed class BringUpJob : IDisposable
     /// <summary>The step's last line once it has ended (what was done, or the failure naming the module or motor and what to do), else null.</summary>
     public string? Outcome => _outcome;
 
+    /// <summary>True when the step ended in an exception its run does not handle (a calibration's motors then in doubt).</summary>
+    public bool Unexpected { get; private set; }
+
     /// <summary>Completes when the step's thread has ended (after a stop: with the motors off, read back).</summary>
     public Task Ended => _ended.Task;
 
@@ -85,6 +88,7 @@ public sealed class BringUpJob : IDisposable
                 IOException or ArgumentException or UnauthorizedAccessException => ex.Message,
                 _ => $"{Step}: failed ({ex.GetType().Name}: {ex.Message}); check the module's power and the bus, then run it again",
             };
+            Unexpected = ex is not (OperationCanceledException or IOException or ArgumentException or UnauthorizedAccessException);
             _state = _stop.IsCancellationRequested ? "stopped" : "failed";
             _lines.WriteLine(_outcome);
         }

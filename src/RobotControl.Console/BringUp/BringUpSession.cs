@@ -1,3 +1,4 @@
+using RobotControl.Robot.Calibration;
 using RobotControl.WebConsole.Session;
 
 namespace RobotControl.WebConsole.BringUp;
@@ -93,7 +94,9 @@ public sealed class BringUpSession : IConsoleSession
         get
         {
             var job = _job;
-            var calibrating = job is { Step: "calibrate", Running: true };
+            // Motors in doubt: a calibration running, or one that ended without its motors confirmed off (the calibrator's
+            // own line says "turning its motors off was not confirmed", or an exception its run does not handle).
+            var calibrating = job is { Step: "calibrate" } && (job.Running || job.Unexpected || job.Outcome?.Contains(PotCalibrator.NotConfirmedOff, StringComparison.Ordinal) == true);
             var state = job is null ? "bring-up: idle" : $"bring-up: {job.Step} {job.State}";
             var faults = job is { State: "failed" or "stopped", Outcome: { } outcome } ? new[] { outcome } : [];
             var modules = Unit.Modules;

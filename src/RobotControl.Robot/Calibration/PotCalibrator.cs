@@ -29,6 +29,9 @@ namespace RobotControl.Robot.Calibration;
 /// </summary>
 public sealed class PotCalibrator
 {
+    /// <summary>What <see cref="Disarm"/>'s failure line says: the motors may still be on.</summary>
+    public const string NotConfirmedOff = "turning its motors off was not confirmed";
+
     private static readonly ControlTable Table = ControlTable.Firmware;
     private readonly BusClient _client;
     private readonly PotSweepPlan _plan;
@@ -176,7 +179,7 @@ public sealed class PotCalibrator
         var read = _client.Read(_id, Table["torque_enable"].At(0), back, BusRobot.InsistingRetries);
         if (!torque.Succeeded || !read.Succeeded || back.Any(b => b != 0))
         {
-            throw new IOException($"{What}: turning its motors off was not confirmed (write {torque.Outcome}, read back {read.Outcome}{(read.Succeeded ? $" [{string.Join(' ', back)}]" : string.Empty)}): switch its power off");
+            throw new IOException($"{What}: {NotConfirmedOff} (write {torque.Outcome}, read back {read.Outcome}{(read.Succeeded ? $" [{string.Join(' ', back)}]" : string.Empty)}): switch its power off");
         }
     }
 

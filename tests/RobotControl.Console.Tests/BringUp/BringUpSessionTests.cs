@@ -1,5 +1,6 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
+using RobotControl.Robot.Calibration;
 using RobotControl.Robot.Commissioning;
 using RobotControl.Simulation;
 using RobotControl.TestSupport;
@@ -52,6 +53,28 @@ public sealed class BringUpSessionTests : IDisposable
         Assert.True(client.Read(2, ControlTable.Firmware["torque_enable"].At(0), torque).Succeeded);
         Assert.Equal(0, torque[0]);
         Assert.Null(UnitFile.Load(path)!.Module(2)!.PotCalibration);
+    }
+
+    [Fact]
+    public async Task A_module_that_goes_silent_mid_calibration_is_named_and_its_motors_are_not_shown_off()
+    {
+        using var lb = new VirtualLb(new VirtualRobotOptions { UnitVariationSeed = 3 }, start: false);
+        var unit = new UnitFile { Unit = "lb-0403", RobotFile = "lb-1.0.json" };
+        unit.Modules.Add(new UnitModule { Id = 2, Name = "right upper arm", ModelNumber = 0, FirmwareVersion = 3, Parameters = [] });
+        unit.Save(Path.Combine(_units, "lb-0403.json"), lb.Clock.GetUtcNow());
+        using var session = new BringUpSession(Setup(lb, "lb-0403", _ => new BusClient(lb.Sim.OpenLink(), lb.Clock)));
+        Assert.True(session.StartCalibration(2, redo: false).Succeeded);
+        await Until(() => session.Job!.State == "waiting");
+
+        lb.Sim.Disconnect(2); // its cable comes out while the operator sets the fixture
+        Assert.True(session.Continue().Succeeded);
+        await session.Job!.Ended;
+
+        Assert.Equal("failed", session.Job.State);
+        Assert.StartsWith("module 2 (right upper arm): ", session.Job.Outcome, StringComparison.Ordinal);
+        Assert.EndsWith($"{PotCalibrator.NotConfirmedOff} (write Timeout, read back Timeout): switch its power off", session.Job.Outcome, StringComparison.Ordinal);
+        Assert.True(session.Status.TorqueOn, "motors not confirmed off are not shown off");
+        Assert.Equal([session.Job.Outcome!], session.Status.Faults);
     }
 
     [Fact]
