@@ -71,6 +71,11 @@ public sealed partial class BringUpPageTests : IDisposable
         await Assertions.Expect(page.GetByTestId("bringup-result")).ToContainTextAsync("unit lb-0301: 1 pot calibrated and verified, motors off (read back)", new() { Timeout = Calibration });
         await Assertions.Expect(page.GetByTestId("bringup-pot-right.elbow")).ToContainTextAsync("calibrated and verified, worst ");
         await Assertions.Expect(page.GetByTestId("bringup-pot-left.elbow")).ToHaveTextAsync("not calibrated");
+        if (Environment.GetEnvironmentVariable("CONSOLE_SCREENSHOTS") is { Length: > 0 } dir)
+        {
+            await page.ScreenshotAsync(new() { Path = Path.Combine(dir, "bringup.png") });
+        }
+
         var elbow = Unit("lb-0301")["modules"]!.AsArray().Single(m => (int)m!["id"]! == 2)!;
         Assert.True((bool)elbow["pot_calibration"]!["right.elbow"]!["verified"]!);
         var calibrated = Parameters("lb-0301", 2);
@@ -108,7 +113,8 @@ public sealed partial class BringUpPageTests : IDisposable
             Assert.Contains("another console holds the operator role; this one watches", await refused.Content.ReadAsStringAsync(), StringComparison.Ordinal);
         }
 
-        foreach (var stop in new[] { "bringup-stop", "bar-estop" })
+        var sweeping = operating.GetByTestId("bringup-log").Locator("li", new() { HasTextString = "right.elbow: sweeping its range" });
+        foreach (var (stop, round) in new[] { ("bringup-stop", 1), ("bar-estop", 2) })
         {
             await operating.GetByTestId("bringup-module").SelectOptionAsync("2");
             await operating.GetByTestId("bringup-redo").CheckAsync();
@@ -116,10 +122,7 @@ public sealed partial class BringUpPageTests : IDisposable
             await Assertions.Expect(operating.GetByTestId("bringup-prompt-text")).ToContainTextAsync("put the arm in its fixture pose", new() { Timeout = Wait });
             await operating.GetByTestId("bringup-continue").ClickAsync();
             await Assertions.Expect(operating.Locator("#message")).ToHaveTextAsync("calibrate: continuing", new() { Timeout = Wait });
-            await Assertions.Expect(operating.GetByTestId("bringup-log")).ToContainTextAsync(
-                "right.elbow: sweeping its range", new() { Timeout = Wait });
-            await Assertions.Expect(watching.GetByTestId("bringup-state")).ToHaveTextAsync("Calibrate pots: running", new() { Timeout = Wait });
-            var sweeps = Regex.Count(await operating.GetByTestId("bringup-log").InnerTextAsync(), "right.elbow: sweeping its range");
+            await Assertions.Expect(sweeping).ToHaveCountAsync(round, new() { Timeout = Wait });
             await watching.GetByTestId(stop).ClickAsync();
             foreach (var page in new[] { watching, operating })
             {
@@ -128,7 +131,8 @@ public sealed partial class BringUpPageTests : IDisposable
                 await Assertions.Expect(result).ToHaveAttributeAsync("role", "alert");
             }
 
-            Assert.Equal(sweeps, Regex.Count(await operating.GetByTestId("bringup-log").InnerTextAsync(), "right.elbow: sweeping its range"));
+            await Assertions.Expect(watching.GetByTestId("bringup-state")).ToHaveTextAsync("Calibrate pots: stopped", new() { Timeout = Wait });
+            Assert.Equal(round, await sweeping.CountAsync()); // stopped in that sweep
             Assert.Equal(0, TorqueOf(transport, 2)); // the step closed the bus: the simulator's module reads back off
             await Assertions.Expect(operating.GetByTestId("bar-motors")).ToHaveTextAsync("motors off", new() { Timeout = Wait });
         }

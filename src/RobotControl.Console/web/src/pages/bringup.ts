@@ -84,7 +84,8 @@ export function bringupPage(root: HTMLElement): () => void {
     showUnit(view.unit);
     showJob(view.job);
     for (const line of view.lines) {
-      after = Math.max(after, line.sequence);
+      if (line.sequence <= after) continue; // a poll and an action's refresh crossed: each line once
+      after = line.sequence;
       log.append(el('li', { class: line.text.startsWith('== ') ? 'step' : '' }, line.text));
     }
     if (view.lines.length > 0) log.lastElementChild?.scrollIntoView({ block: 'nearest' });
