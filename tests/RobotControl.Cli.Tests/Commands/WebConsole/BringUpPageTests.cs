@@ -71,6 +71,7 @@ public sealed partial class BringUpPageTests : IDisposable
         await Assertions.Expect(page.GetByTestId("bringup-result")).ToContainTextAsync("unit lb-0301: 1 pot calibrated and verified, motors off (read back)", new() { Timeout = Calibration });
         await Assertions.Expect(page.GetByTestId("bringup-pot-right.elbow")).ToContainTextAsync("calibrated and verified, worst ");
         await Assertions.Expect(page.GetByTestId("bringup-pot-left.elbow")).ToHaveTextAsync("not calibrated");
+        await Assertions.Expect(page.GetByTestId("bringup-prompt")).ToBeHiddenAsync(); // no question once the step is done
         if (Environment.GetEnvironmentVariable("CONSOLE_SCREENSHOTS") is { Length: > 0 } dir)
         {
             await page.ScreenshotAsync(new() { Path = Path.Combine(dir, "bringup.png") });

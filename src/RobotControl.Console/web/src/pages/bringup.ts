@@ -35,7 +35,7 @@ export function bringupPage(root: HTMLElement): () => void {
   const toolbar = el('div', { class: 'toolbar' },
     commission, el('label', {}, poll, ' wait for each module by itself'), ' · ',
     calibrate, module, el('label', {}, redo, ' again (calibrated ones too)'), ' · ', stop,
-    el('span', { class: 'level', 'data-testid': 'bringup-state' }));
+    el('span', { class: 'bringup-state', 'data-testid': 'bringup-state' }));
   const prompt = el('div', { class: 'bringup-prompt', 'data-testid': 'bringup-prompt', role: 'status', hidden: '' });
   const promptText = el('span', { 'data-testid': 'bringup-prompt-text' });
   prompt.append(promptText, button('Continue', () => start('/bringup/continue', undefined), { 'data-testid': 'bringup-continue', ...needsRole }));
