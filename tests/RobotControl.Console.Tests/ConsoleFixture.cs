@@ -5,6 +5,7 @@ using RobotControl.Plugins.Standard.Conditioning;
 using RobotControl.Plugins.Touch;
 using RobotControl.Runtime.Discovery;
 using RobotControl.WebConsole.Adapter;
+using RobotControl.TestSupport;
 using RobotControl.WebConsole.Server;
 
 namespace RobotControl.WebConsole.Tests;
@@ -15,15 +16,10 @@ namespace RobotControl.WebConsole.Tests;
 /// </summary>
 public sealed class ConsoleFixture : IAsyncLifetime
 {
-    public const string ChromiumPath = "/usr/bin/chromium";
+    public const string ChromiumPath = DebianChromium.Path;
 
-    /// <summary>Chromium's switches: WebGL through SwiftShader, and Chromium's fake capture device, granted without asking (the surgeon's video panel).</summary>
-    public static readonly string[] ChromiumArgs =
-    [
-        "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-        "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
-        "--use-fake-device-for-media-stream", "--use-fake-ui-for-media-stream",
-    ];
+    /// <summary>Chromium's switches (<see cref="DebianChromium.Args"/>).</summary>
+    public static readonly string[] ChromiumArgs = [.. DebianChromium.Args];
 
     private HeadlessChromium? _chromium;
 

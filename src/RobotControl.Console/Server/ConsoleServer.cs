@@ -91,6 +91,12 @@ public sealed class ConsoleServer : IAsyncDisposable
         {
             Replay.ReplayEndpoints.Map(app, replay);
         }
+
+        if (session is BringUp.BringUpSession bringUp)
+        {
+            BringUp.BringUpEndpoints.Map(app, bringUp, server.Operator);
+        }
+
         if (options.Editor is not null)
         {
             GraphEndpoints.Map(app, options.Editor, server.Operator);

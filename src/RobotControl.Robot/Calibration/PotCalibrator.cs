@@ -29,6 +29,9 @@ namespace RobotControl.Robot.Calibration;
 /// </summary>
 public sealed class PotCalibrator
 {
+    /// <summary>What <see cref="Disarm"/>'s failure line says: the motors may still be on.</summary>
+    public const string NotConfirmedOff = "turning its motors off was not confirmed";
+
     private static readonly ControlTable Table = ControlTable.Firmware;
     private readonly BusClient _client;
     private readonly PotSweepPlan _plan;
@@ -79,6 +82,8 @@ public sealed class PotCalibrator
     public void Reference()
     {
         Disarm();
+        Poll();
+        AcknowledgeStale();
         var (start, end) = Table.PersistentArea;
         var persistent = new byte[end - start];
         Require(_client.ReadMapped(_id, Table, start, persistent), "reading its parameters");
@@ -176,7 +181,7 @@ public sealed class PotCalibrator
         var read = _client.Read(_id, Table["torque_enable"].At(0), back, BusRobot.InsistingRetries);
         if (!torque.Succeeded || !read.Succeeded || back.Any(b => b != 0))
         {
-            throw new IOException($"{What}: turning its motors off was not confirmed (write {torque.Outcome}, read back {read.Outcome}{(read.Succeeded ? $" [{string.Join(' ', back)}]" : string.Empty)}): switch its power off");
+            throw new IOException($"{What}: {NotConfirmedOff} (write {torque.Outcome}, read back {read.Outcome}{(read.Succeeded ? $" [{string.Join(' ', back)}]" : string.Empty)}): switch its power off");
         }
     }
 
@@ -310,6 +315,24 @@ public sealed class PotCalibrator
         Require(_client.Write(_id, Table["hardware_error_status"].At(0), [0], BusRobot.InsistingRetries), "acknowledging its bus watchdog");
         Arm();
         return true;
+    }
+
+    /// <summary>
+    /// A bus hold or bus-watchdog stop latched before this calibration (this host went quiet at a previous stop, e.g.
+    /// a stopped calibration; the motors are off now, read back) is acknowledged and said, as the robot acknowledges a
+    /// hold; with anything else latched it stays, and the first check names it.
+    /// </summary>
+    private void AcknowledgeStale()
+    {
+        var status = (HardwareErrors)Field("hardware_error_status", 0);
+        var stale = HardwareErrors.BusHold | HardwareErrors.BusWatchdog;
+        if ((status & stale).IsNone || !(status & ~(stale | HardwareErrors.OverCurrent | HardwareErrors.PositionLost)).IsNone)
+        {
+            return;
+        }
+
+        Require(_client.Write(_id, Table["hardware_error_status"].At(0), [0], BusRobot.InsistingRetries), "acknowledging a bus hold latched before");
+        _note($"{What}: {status & stale} latched before this calibration (this host went quiet at a previous stop; motors off, read back): acknowledged");
     }
 
     private bool Arrived(byte[] goals) => _plan.Motors.All(m =>

@@ -1,4 +1,5 @@
 using Microsoft.Playwright;
+using RobotControl.TestSupport;
 
 namespace RobotControl.WebConsole.Tests.Web;
 
@@ -6,8 +7,6 @@ namespace RobotControl.WebConsole.Tests.Web;
 [Collection(ConsoleCollection.Name)]
 public sealed class AccessibilityTests(ConsoleFixture console)
 {
-    private static readonly string AxeScript = Path.Combine(ConsoleFixture.RepoRoot, "src", "RobotControl.Console", "web", "node_modules", "axe-core", "axe.min.js");
-
     [Theory]
     [MemberData(nameof(EveryPage))]
     public async Task Axe_finds_no_serious_or_critical_violation(string name)
@@ -21,12 +20,8 @@ public sealed class AccessibilityTests(ConsoleFixture console)
             await page.GotoAsync(ConsoleFixture.PageUrl(console.Server, name));
             await page.Locator("#role").Filter(new() { HasTextString = "watching" }).WaitForAsync();
             await page.WaitForTimeoutAsync(1500);
-            await page.AddScriptTagAsync(new() { Path = AxeScript });
-            var violations = await page.EvaluateAsync<string[]>(@"async () => {
-                const result = await axe.run(document, { resultTypes: ['violations'] });
-                return result.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
-                    .map((v) => `${v.impact} ${v.id} (${v.help}): ${v.nodes.slice(0, 4).map((n) => n.target.join(' ')).join(', ')}`);
-            }");
+            await page.AddScriptTagAsync(new() { Path = AxeCheck.ScriptPath });
+            var violations = await page.EvaluateAsync<string[]>(AxeCheck.SeriousViolations);
             Assert.True(violations.Length == 0, $"{name}: {string.Join("\n", violations)}");
         }
         finally

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using RobotControl.Cli.Commands.Commission;
+using RobotControl.Robot.Commissioning;
 
 namespace RobotControl.Cli.Commands.Bus;
 

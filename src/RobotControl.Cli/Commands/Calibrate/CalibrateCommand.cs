@@ -8,6 +8,7 @@ using RobotControl.Cli.Options;
 using RobotControl.Definitions.Loading;
 using RobotControl.Host.Session;
 using RobotControl.Robot.Calibration;
+using RobotControl.Robot.Commissioning;
 
 namespace RobotControl.Cli.Commands.Calibrate;
 

@@ -7,6 +7,7 @@ using RobotControl.Cli.Options;
 using RobotControl.Definitions.Loading;
 using RobotControl.Host.Session;
 using RobotControl.Modules;
+using RobotControl.Robot.Commissioning;
 
 namespace RobotControl.Cli.Commands.Commission;
 

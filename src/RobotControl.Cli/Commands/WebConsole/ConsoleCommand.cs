@@ -27,6 +27,10 @@ internal sealed class ConsoleCommand : ICliCommand
     public Command Build()
     {
         var graph = new Argument<FileInfo?>("graph") { Description = "Graph file, e.g. graphs/teleop-lb.json (none with --replay)", Arity = ArgumentArity.ZeroOrOne };
+        var bringUp = new Option<FileInfo?>("--bring-up") { Description = "Serve the Bring-up page for this robot file instead of a robot: commission and calibrate a unit (with --transport serial:<port> --unit <name> [--units dir]; docs/bring-up.md)" };
+        var unit = new Option<string?>("--unit") { Description = "With --bring-up: the unit's name, its record is <units>/<name>.json" };
+        var units = new Option<DirectoryInfo?>("--units") { Description = $"With --bring-up: directory of unit files (default {Commission.CommissionCommand.DefaultUnitsDirectory})" };
+        var margin = CliOption.Number("--margin-ms", "With --bring-up: reply timeout beyond the wire time, ms (USB adapters: their latency timer + 1)", 0.0, 1000.0, 3.0);
         var replay = new Option<FileInfo?>("--replay") { Description = "Serve the pages from a recording (robotctl run --record) instead of a robot: play, pause, 0.25x-4x, seek (docs/recording.md)" };
         var isVirtual = new Option<bool>("--virtual") { Description = "Run the virtual robot (real firmware, simulated motors) in real time" };
         var transport = new Option<string?>("--transport") { Description = "Bus transport instead of the graph's: serial:/dev/ttyUSB0?baud=1000000 | usb:0403:6001 | tcp:host:port" };
@@ -53,14 +57,21 @@ internal sealed class ConsoleCommand : ICliCommand
         }
 
         record.AddTo(command);
-        command.Options.Add(replay);
+        foreach (var o in new Option[] { replay, bringUp, unit, units, margin })
+        {
+            command.Options.Add(o);
+        }
+
+        ConsoleAccess Access(ParseResult parse) => new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName);
         command.SetAction(parse => parse.GetValue(replay) is { } file
-            ? ConsoleReplay.Run(file.FullName, parse.GetValue(graph) is null, new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName), parse.InvocationConfiguration.Output, parse.InvocationConfiguration.Error)
+            ? ConsoleReplay.Run(file.FullName, parse.GetValue(graph) is null, Access(parse), parse.InvocationConfiguration.Output, parse.InvocationConfiguration.Error)
+            : parse.GetValue(bringUp) is { } robotFile
+            ? ConsoleBringUp.Run(new ConsoleBringUp.Options(robotFile, parse.GetValue(transport), parse.GetValue(unit), parse.GetValue(units), parse.GetValue(margin)), parse.GetValue(graph) is null, Access(parse), parse.InvocationConfiguration.Output, parse.InvocationConfiguration.Error)
             : Run(
             parse.GetValue(graph)?.FullName,
             parse.GetValue(isVirtual),
             parse.GetValue(transport),
-            new ConsoleAccess(parse.GetValue(bind)!, parse.GetValue(token), parse.GetValue(allowedHosts) ?? [], parse.GetValue(httpsCert)?.FullName, parse.GetValue(httpsKey)?.FullName),
+            Access(parse),
             parse.GetValue(open),
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),

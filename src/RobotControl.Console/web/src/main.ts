@@ -14,6 +14,7 @@ const pages: Record<string, () => Promise<Page>> = {
   status: async () => (await import('./pages/status')).statusPage,
   editor: async () => (await import('./pages/editor/page')).editorPage,
   surgeon: async () => (await import('./pages/surgeon')).surgeonPage,
+  bringup: async () => (await import('./pages/bringup')).bringupPage,
 };
 let leave: (() => void) | null = null;
 let visit = 0;

@@ -3,10 +3,10 @@ using RobotControl.Bus.Protocol;
 using RobotControl.Modules;
 using RobotControl.Robot.Bus;
 
-namespace RobotControl.Cli.Commands.Commission;
+namespace RobotControl.Robot.Commissioning;
 
 /// <summary>What <c>discover --unit</c> compares: every module of a unit file against the bus (it answers at its ID, with its firmware version, and every recorded parameter reads back as recorded).</summary>
-internal static class UnitCheck
+public static class UnitCheck
 {
     /// <summary>
     /// The differences from the robot file in <paramref name="mismatches"/> that are <paramref name="unit"/>'s pot

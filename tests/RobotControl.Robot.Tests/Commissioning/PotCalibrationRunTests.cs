@@ -1,13 +1,12 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Cli.Commands.Calibrate;
-using RobotControl.Cli.Commands.Commission;
 using RobotControl.Modules;
 using RobotControl.Robot.Calibration;
+using RobotControl.Robot.Commissioning;
 using RobotControl.Simulation;
 using RobotControl.TestSupport;
 
-namespace RobotControl.Cli.Tests.Commands.Calibrate;
+namespace RobotControl.Robot.Tests.Commissioning;
 
 /// <summary>
 /// <see cref="PotCalibrationRun"/> on the in-process virtual robot (the real firmware, simulated time) with unit

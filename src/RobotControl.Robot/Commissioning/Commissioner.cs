@@ -3,7 +3,7 @@ using RobotControl.Bus.Protocol;
 using RobotControl.Definitions.Model;
 using RobotControl.Modules;
 
-namespace RobotControl.Cli.Commands.Commission;
+namespace RobotControl.Robot.Commissioning;
 
 /// <summary>
 /// Commissions a unit module by module: finds each factory-fresh module at the control table's default ID as the
@@ -11,9 +11,11 @@ namespace RobotControl.Cli.Commands.Commission;
 /// defines through the one parameter path (<see cref="ParameterWriter"/>, each verified by read-back), sets the baud
 /// when the file's differs from the factory's, and records the module in the unit file. Modules the unit file holds
 /// are done; any other is (re)done from the start, so a stop at any point loses nothing. The module whose robot-file ID
-/// is the default ID comes last: until then a fresh module at that ID is the one being commissioned.
+/// is the default ID comes last: until then a fresh module at that ID is the one being commissioned. A stop
+/// (<paramref name="stop"/>, the console's STOP) ends it between two bus transactions; commissioning never turns a
+/// motor on.
 /// </summary>
-internal sealed class Commissioner(CommissionSetup setup, BusClient client, TextWriter output)
+public sealed class Commissioner(CommissionSetup setup, BusClient client, TextWriter output, CancellationToken stop = default)
 {
     private static readonly ControlTable Table = ControlTable.Firmware;
     private static readonly byte FactoryId = (byte)Table["id"].Default;
@@ -24,12 +26,16 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
     /// <exception cref="ArgumentException">A robot-file value is refused by the parameter rules (naming the module, parameter and value).</exception>
     public int Run()
     {
+        ArgumentNullException.ThrowIfNull(setup);
+        ArgumentNullException.ThrowIfNull(client);
+        ArgumentNullException.ThrowIfNull(output);
         var modules = setup.Robot.Modules.Modules;
         var order = modules.Where(m => m.Id != FactoryId).Concat(modules.Where(m => m.Id == FactoryId)).ToList();
         for (var k = 0; k < order.Count; k++)
         {
             var module = order[k];
             var what = $"module {k + 1} of {order.Count} ({module.Name}, id {module.Id})";
+            Stopped(what);
             if (setup.Unit.Module(module.Id) is not null)
             {
                 output.WriteLine($"{what}: done ({setup.UnitPath})");
@@ -64,8 +70,10 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
         var told = string.Empty;
         while (true)
         {
+            Stopped(what);
             if (!setup.Poll && setup.Operator.ReadLine() is null)
             {
+                Stopped(what);
                 throw new IOException($"stopped before {what} was connected (no more input); run commission again to continue from it");
             }
 
@@ -87,8 +95,17 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
 
             if (setup.Poll)
             {
-                setup.Time.Delay(TimeSpan.FromMilliseconds(200));
+                setup.Time.Delay(TimeSpan.FromMilliseconds(200), stop);
             }
+        }
+    }
+
+    /// <summary>Ends the run when it was asked to stop (before <paramref name="what"/> was recorded).</summary>
+    private void Stopped(string what)
+    {
+        if (stop.IsCancellationRequested)
+        {
+            throw new IOException($"stopped before {what} was recorded (commissioning turns no motor on); run commission again to continue from it");
         }
     }
 
@@ -188,14 +205,14 @@ internal sealed class Commissioner(CommissionSetup setup, BusClient client, Text
 }
 
 /// <summary>What a commissioning runs with: the robot file, the unit file and its path, the operator's input or polling, the clock, and a check of a module at another baud.</summary>
-internal sealed record CommissionSetup(RobotDefinition Robot, UnitFile Unit, string UnitPath, TextReader Operator, bool Poll, CommissionClock Time, Func<int, byte, bool> AnswersAt);
+public sealed record CommissionSetup(RobotDefinition Robot, UnitFile Unit, string UnitPath, TextReader Operator, bool Poll, CommissionClock Time, Func<int, byte, bool> AnswersAt);
 
 /// <summary>The commissioning's time: the date it records and the waits between polls.</summary>
-internal sealed class CommissionClock(TimeProvider time)
+public sealed class CommissionClock(TimeProvider time)
 {
     /// <summary>Now, UTC.</summary>
     public DateTimeOffset GetUtcNow() => time.GetUtcNow();
 
-    /// <summary>Waits <paramref name="duration"/> on the clock.</summary>
-    public void Delay(TimeSpan duration) => Task.Delay(duration, time).GetAwaiter().GetResult();
+    /// <summary>Waits <paramref name="duration"/> on the clock, or until <paramref name="stop"/> (then it returns at once).</summary>
+    public void Delay(TimeSpan duration, CancellationToken stop = default) => Task.Delay(duration, time, stop).ContinueWith(_ => { }, TaskScheduler.Default).GetAwaiter().GetResult();
 }

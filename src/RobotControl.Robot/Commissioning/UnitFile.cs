@@ -3,14 +3,14 @@ using System.Text.Json;
 using System.Text.Json.Serialization;
 using RobotControl.Bus.Protocol;
 
-namespace RobotControl.Cli.Commands.Commission;
+namespace RobotControl.Robot.Commissioning;
 
 /// <summary>
 /// A commissioned unit, <c>hardware/units/&lt;name&gt;.json</c>: which robot file it was built to, and for every module
 /// whose parameters were all written and verified, its ID, name, firmware version and those parameters. A module not
 /// in it is not done (a resumed commissioning redoes it). Written atomically (a temporary file renamed over it).
 /// </summary>
-internal sealed class UnitFile
+public sealed class UnitFile
 {
     private static readonly JsonSerializerOptions Json = new() { WriteIndented = true, PropertyNamingPolicy = JsonNamingPolicy.SnakeCaseLower, DefaultIgnoreCondition = JsonIgnoreCondition.WhenWritingNull };
 
@@ -91,7 +91,7 @@ internal sealed class UnitFile
 }
 
 /// <summary>One commissioned module of a <see cref="UnitFile"/>.</summary>
-internal sealed class UnitModule
+public sealed class UnitModule
 {
     /// <summary>Its ID (the robot file's).</summary>
     public required byte Id { get; init; }
@@ -113,7 +113,7 @@ internal sealed class UnitModule
 }
 
 /// <summary>One motor's pot calibration in a <see cref="UnitFile"/>: its table is in the module's <see cref="UnitModule.Parameters"/> (<c>pot_cal_*</c>).</summary>
-internal sealed class UnitPotCalibration
+public sealed class UnitPotCalibration
 {
     /// <summary>When it was written into the module (UTC, ISO 8601).</summary>
     public required string Date { get; init; }

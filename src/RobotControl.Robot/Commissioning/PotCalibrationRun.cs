@@ -1,11 +1,10 @@
 using System.Globalization;
 using RobotControl.Bus.Client;
-using RobotControl.Cli.Commands.Commission;
 using RobotControl.Definitions.Model;
 using RobotControl.Modules;
 using RobotControl.Robot.Calibration;
 
-namespace RobotControl.Cli.Commands.Calibrate;
+namespace RobotControl.Robot.Commissioning;
 
 /// <summary>
 /// The guided pot calibration of a commissioned unit, module by module (<see cref="PotCalibrator"/>'s steps): the
@@ -14,7 +13,7 @@ namespace RobotControl.Cli.Commands.Calibrate;
 /// verdict recorded. Motors the unit file has as calibrated and verified are skipped (unless <c>--redo</c>). Any
 /// failure or stop: the module's motors off (read back), then one line naming the motor or module and what to do.
 /// </summary>
-internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient client, TextWriter output, CancellationToken stop)
+public sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient client, TextWriter output, CancellationToken stop)
 {
     /// <summary>Calibrates every selected motor not yet done; returns the exit code.</summary>
     /// <exception cref="IOException">A module or motor failed, or the run was stopped (one line; the motors are off).</exception>
@@ -175,10 +174,10 @@ internal sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient cli
 }
 
 /// <summary>What a pot calibration runs with: the robot file, the unit file and its path, the operator's input or --yes, the motors selected, --redo, and how it moves.</summary>
-internal sealed record PotCalibrationSetup(RobotDefinition Robot, UnitFile Unit, string UnitPath, TextReader Operator, bool Yes, PotSelection Joints, bool Redo, PotCalibrationOptions Options);
+public sealed record PotCalibrationSetup(RobotDefinition Robot, UnitFile Unit, string UnitPath, TextReader Operator, bool Yes, PotSelection Joints, bool Redo, PotCalibrationOptions Options);
 
 /// <summary>The motors <c>--joints</c> selects: <c>arm.joint</c> names or joint names (both arms); none given: every motor.</summary>
-internal sealed class PotSelection
+public sealed class PotSelection
 {
     private readonly HashSet<string>? _names;
 
