@@ -1,8 +1,8 @@
 using RobotControl.Bus.Client;
 using RobotControl.Bus.Protocol;
-using RobotControl.Cli.Commands.Commission;
 using RobotControl.Cli.Tests.Commands.Calibrate;
 using RobotControl.Modules;
+using RobotControl.Robot.Commissioning;
 using RobotControl.Simulation;
 using RobotControl.Simulation.Time;
 using RobotControl.TestSupport;
