@@ -164,6 +164,9 @@ public sealed class PotCalibrationRun(PotCalibrationSetup setup, BusClient clien
         line.Wait(stop);
         if (line.Result is null)
         {
+            // The input can end because of the stop itself (the console's prompt ends its wait on it), as this wait
+            // does: whichever sees it first, a stop is reported as one, with the motors off.
+            stop.ThrowIfCancellationRequested();
             throw new IOException($"stopped before module {plan.Module.Id} ({plan.Module.Name}) was confirmed in its fixture pose (no more input); run calibrate pots again to continue");
         }
     }
