@@ -11,12 +11,16 @@ public sealed class TickProfileTests
     {
         public ManualResetEventSlim Release { get; } = new();
 
+        /// <summary>Set once a tick is stuck (inside it, so the profile has it as the plug-in in its tick).</summary>
+        public ManualResetEventSlim Entered { get; } = new();
+
         public bool Stopped { get; private set; }
 
         public override void Tick(in TickContext context)
         {
             if (context.Index >= from)
             {
+                Entered.Set();
                 Release.Wait();
             }
         }
@@ -77,12 +81,9 @@ public sealed class TickProfileTests
         loop.Start();
         try
         {
-            var waited = System.Diagnostics.Stopwatch.StartNew();
-            while (program.Profile.InTick() is null && waited.Elapsed < TimeSpan.FromSeconds(20))
-            {
-                Thread.Sleep(5);
-            }
-
+            // Not "until something is in its tick": the earlier ticks pass through 'before' and 'stuck' too, and
+            // between two of them nothing is (a full run read null right after such a moment).
+            Assert.True(stuck.Entered.Wait(TimeSpan.FromSeconds(20)), "the stuck tick never began");
             var inTick = program.Profile.InTick()!.Value;
             Assert.Equal("plug-in 'stuck' (Stuck), in its tick", inTick.Name);
             Assert.Equal(inTick.Name, program.Profile.Culprit(1e6)); // in its tick: named whatever the threshold
