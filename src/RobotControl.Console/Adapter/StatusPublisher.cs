@@ -141,10 +141,11 @@ internal sealed class StatusPublisher : IDisposable
     /// <summary>Names of the set bits of <paramref name="bits"/>, as the control table names them.</summary>
     private static string[] Names(HardwareErrors bits) => bits.IsNone ? [] : bits.ToString().Split(", ");
 
-    /// <summary>A reset cause in words, as the control table names it.</summary>
-    private static string ResetCause(int cause) =>
-        cause == 0 ? "none since connected"
-        : Bus.Protocol.ControlTable.Firmware.Codes("reset_cause").TryGetValue(cause, out var name) ? name : $"cause {cause}";
+    /// <summary>A module's last reset in words, its cause as the control table names it, and whether it was before the host connected.</summary>
+    private static string ResetCause(RobotController c) =>
+        c.LastResetCause == 0 ? "none reported"
+        : (Bus.Protocol.ControlTable.Firmware.Codes("reset_cause").TryGetValue(c.LastResetCause, out var name) ? name : $"cause {c.LastResetCause}")
+          + (c.LastResetBeforeConnect ? " (before the host connected)" : " (while connected)");
 
     private void PublishUntilStopped()
     {
@@ -209,7 +210,7 @@ internal sealed class StatusPublisher : IDisposable
                 c.MissedReplies,
                 c.ModelNumber,
                 c.FirmwareVersion,
-                ResetCause(c.LastResetCause),
+                ResetCause(c),
                 c.Resets,
                 c.BusWatchdogMs switch { < 0 => "not read yet", 0 => "off", var ms => $"{ms} ms" } + (status.HasAny(HardwareErrors.BusWatchdog) ? ", TRIPPED" : status.HasAny(HardwareErrors.BusHold) ? ", HOLDING" : string.Empty),
                 Names(status),

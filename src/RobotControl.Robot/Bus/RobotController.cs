@@ -58,8 +58,14 @@ public sealed class RobotController
     /// <summary>Times this module was seen to reset since the robot was opened.</summary>
     public int Resets { get; internal set; }
 
-    /// <summary>The cause of its last reset seen while connected (the control table's <c>reset_cause</c> code; 0: none).</summary>
+    /// <summary>
+    /// The cause of its last reset (the control table's <c>reset_cause</c> code; 0: none seen): the one it reported
+    /// when the host connected, or a later one seen while connected (see <see cref="LastResetBeforeConnect"/>).
+    /// </summary>
     public int LastResetCause { get; internal set; }
+
+    /// <summary>True when <see cref="LastResetCause"/> is the reset it reported at discovery, from before the host connected.</summary>
+    public bool LastResetBeforeConnect { get; internal set; }
 
     /// <summary>Number of channels the bus exchange covers (highest channel + 1).</summary>
     internal int ChannelSpan => Definition.Motors.Count == 0 ? 1 : Definition.Motors.Max(m => m.Channel) + 1;

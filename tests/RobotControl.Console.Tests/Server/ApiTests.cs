@@ -24,6 +24,20 @@ public sealed class ApiTests(ConsoleFixture console)
     }
 
     [Fact]
+    public async Task Each_module_card_says_why_the_module_last_started()
+    {
+        using var http = console.Client("reset-cause-reader");
+        var controllers = await http.GetFromJsonAsync<System.Text.Json.JsonElement>("api/controllers");
+
+        // Every module of the virtual robot powered on before the console connected (another test may have rebooted one since).
+        foreach (var c in controllers.EnumerateArray())
+        {
+            var cause = c.GetProperty("resetCause").GetString();
+            Assert.True(cause is "power-on (before the host connected)" or "software (while connected)", $"module {c.GetProperty("id")}: last reset \"{cause}\"");
+        }
+    }
+
+    [Fact]
     public async Task A_watching_client_cannot_jog()
     {
         using var operatorClient = await console.Operator("operator-a");

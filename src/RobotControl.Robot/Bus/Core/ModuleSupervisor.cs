@@ -99,7 +99,10 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
         return true;
     }
 
-    /// <summary>A module's reset cause from before the host connected is history, not a fault: note it and clear it.</summary>
+    /// <summary>
+    /// A module's reset cause from before the host connected is history, not a fault: it is kept as the module's last
+    /// reset (so a page says why it last started, e.g. power-on or its watchdog) and cleared in the module.
+    /// </summary>
     public void AcknowledgeStartup()
     {
         Span<byte> two = stackalloc byte[2];
@@ -113,6 +116,8 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
             c.HardwareErrorStatus = two[0];
             if (two[1] != 0)
             {
+                c.LastResetCause = two[1];
+                c.LastResetBeforeConnect = true;
                 _ = client.Write(c.Id, layout.ResetCauseAddress, [0]);
             }
         }
@@ -192,6 +197,7 @@ internal sealed class ModuleSupervisor(RobotLayout layout, BusClient client, Mod
     {
         c.Resets++;
         c.LastResetCause = cause;
+        c.LastResetBeforeConnect = false;
         faults.Latch(RobotFaults.ModuleReset);
         var why = layout.ResetCauses.TryGetValue(cause, out var name) ? name : $"cause {cause}";
         var resumed = !status.HasAny(HardwareErrors.PositionLost);

@@ -209,6 +209,32 @@ public sealed class ModuleSupervisorTests
     }
 
     [Fact]
+    public void The_reset_a_module_reports_at_start_up_is_kept_as_its_last_reset_before_the_host_connected_and_a_later_one_replaces_it()
+    {
+        using var rig = new TappedLb(start: false);
+        var robot = rig.Robot;
+        rig.Sim.Advance(TimeSpan.FromMilliseconds(2));
+
+        robot.Discover();
+
+        var module = robot.Controller(2)!;
+        Assert.Equal(1, module.LastResetCause); // power-on: the module started when the virtual robot did
+        Assert.True(module.LastResetBeforeConnect);
+        Assert.Equal(0, module.Resets); // history, not a reset this session
+        Assert.Equal(0, robot.ReadParameter(2, "reset_cause")); // and cleared in the module
+        Assert.Empty(rig.Events<ModuleResetEvent>());
+
+        robot.RunFor(TimeSpan.FromMilliseconds(5));
+        rig.Sim.ScheduleReset(2, rig.Sim.Elapsed + TimeSpan.FromMilliseconds(1));
+        robot.RunFor(TimeSpan.FromMilliseconds(50));
+
+        var reset = Assert.Single(rig.Events<ModuleResetEvent>());
+        Assert.Equal(reset.Cause, RobotControl.Bus.Protocol.ControlTable.Firmware.Codes("reset_cause")[module.LastResetCause]);
+        Assert.False(module.LastResetBeforeConnect);
+        Assert.Equal(1, module.Resets);
+    }
+
+    [Fact]
     public void A_pot_mismatch_found_at_start_up_is_a_hardware_error_until_faults_are_cleared()
     {
         using var rig = new TappedLb(start: false);
