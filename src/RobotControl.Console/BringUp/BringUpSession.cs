@@ -11,12 +11,11 @@ namespace RobotControl.WebConsole.BringUp;
 /// stop the step for every console: the calibrator turns its module's motors off (read back) before the answer. Every
 /// robot-session command is refused: there is no running robot.
 /// </summary>
-public sealed class BringUpSession : IConsoleSession
+public sealed class BringUpSession : RobotlessSession
 {
     /// <summary>How long a stop waits for the step to confirm its motors off before it answers without it.</summary>
     public static readonly TimeSpan StopWait = TimeSpan.FromSeconds(30);
 
-    private const string Refusal = "bring-up console: no robot session runs; use the Bring-up page (or robotctl console <graph> once the unit is brought up)";
     private readonly BringUpSetup _setup;
     private readonly Lock _gate = new();
     private readonly List<EventEntry> _events = [];
@@ -25,6 +24,7 @@ public sealed class BringUpSession : IConsoleSession
 
     /// <summary>A bring-up console for <paramref name="setup"/>'s unit.</summary>
     public BringUpSession(BringUpSetup setup)
+        : base("bring-up console: no robot session runs; use the Bring-up page (or robotctl console <graph> once the unit is brought up)")
     {
         ArgumentNullException.ThrowIfNull(setup);
         _setup = setup;
@@ -89,7 +89,7 @@ public sealed class BringUpSession : IConsoleSession
     }
 
     /// <inheritdoc />
-    public SessionStatus Status
+    public override SessionStatus Status
     {
         get
         {
@@ -106,28 +106,19 @@ public sealed class BringUpSession : IConsoleSession
     }
 
     /// <inheritdoc />
-    public IReadOnlyList<ControllerView> Controllers => [];
+    public override SignalRing Signals { get; } = new([], [], 2);
 
     /// <inheritdoc />
-    public SignalRing Signals { get; } = new([], [], 2);
+    public override RobotModelView Model { get; } = new(string.Empty, []);
 
     /// <inheritdoc />
-    public IReadOnlyList<ComponentTiming> Timings => [];
+    public override SurgeonView Surgeon { get; } = new([], [], []);
 
     /// <inheritdoc />
-    public RobotModelView Model { get; } = new(string.Empty, []);
+    public override WorkspaceView Workspace { get; } = new([]);
 
     /// <inheritdoc />
-    public SurgeonView Surgeon { get; } = new([], [], []);
-
-    /// <inheritdoc />
-    public WorkspaceView Workspace { get; } = new([]);
-
-    /// <inheritdoc />
-    public string? RecordingFile => null;
-
-    /// <inheritdoc />
-    public IReadOnlyList<EventEntry> EventsAfter(long after)
+    public override IReadOnlyList<EventEntry> EventsAfter(long after)
     {
         lock (_gate)
         {
@@ -136,16 +127,16 @@ public sealed class BringUpSession : IConsoleSession
     }
 
     /// <inheritdoc />
-    public Task<CommandResult> EmergencyStopAsync() => StopAsync("E-STOP");
+    public override Task<CommandResult> EmergencyStopAsync() => StopAsync("E-STOP");
 
     /// <inheritdoc />
-    public void StopMotorsNow(string reason) => _job?.Stop();
+    public override void StopMotorsNow(string reason) => _job?.Stop();
 
     /// <inheritdoc />
-    public void NoteCommand(string who, string what) => Note(who, what);
+    public override void NoteCommand(string who, string what) => Note(who, what);
 
     /// <inheritdoc />
-    public SessionEnd Close()
+    public override SessionEnd Close()
     {
         if (_job is { } job)
         {
@@ -157,53 +148,13 @@ public sealed class BringUpSession : IConsoleSession
     }
 
     /// <inheritdoc />
-    public void Dispose()
+    protected override void Dispose(bool disposing)
     {
         _ = Close();
         _job?.Dispose();
+
+        base.Dispose(disposing);
     }
-
-    /// <inheritdoc />
-    public Task<CommandResult> DiscoverAsync() => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> RenameAsync(int controllerId, string name) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> ReloadParametersAsync(int controllerId) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> RebootAsync(int controllerId) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> WriteParameterAsync(string motor, string parameter, double value) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> JogAsync(string motor, double degPerS) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> SetpointAsync(string motor, double deg) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> ReleaseAsync(string motor) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> TorqueAsync(bool on) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> PedalAsync(bool down) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> HomeAsync(string? motor) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> ClearFaultsAsync() => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> RecordAsync(bool on) => Refused();
 
     private CommandResult Start(string step, string title, Action<OperatorPrompt, CancellationToken> run)
     {
@@ -230,6 +181,4 @@ public sealed class BringUpSession : IConsoleSession
             _events.Add(new EventEntry(_events.Count + 1, _setup.Time.GetElapsedTime(_started).TotalSeconds, source, message));
         }
     }
-
-    private static Task<CommandResult> Refused() => Task.FromResult(CommandResult.Fail(CommandOutcome.Refused, Refusal));
 }

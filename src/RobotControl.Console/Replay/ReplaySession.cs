@@ -12,12 +12,11 @@ namespace RobotControl.WebConsole.Replay;
 /// operator commands up to it. A chunk found damaged on the way pauses the playback there and says so. Every robot
 /// command is refused.
 /// </summary>
-public sealed class ReplaySession : IConsoleSession
+public sealed class ReplaySession : RobotlessSession
 {
     /// <summary>Slowest and fastest playback.</summary>
     public const double MinRate = 0.25, MaxRate = 4;
 
-    private const string Refusal = "a replay: no robot to command";
     private readonly ReplayData _data;
     private readonly ReplayRows _rows;
     private readonly TimeProvider _time;
@@ -33,6 +32,7 @@ public sealed class ReplaySession : IConsoleSession
     /// <summary>Opens <paramref name="path"/>; with <paramref name="pumpEvery"/>, a timer pumps the ring at that interval.</summary>
     /// <exception cref="InvalidDataException">Not a recording robotctl can replay (one line naming the file).</exception>
     public ReplaySession(string path, TimeProvider time, TimeSpan? pumpEvery = null)
+        : base("a replay: no robot to command")
     {
         ArgumentNullException.ThrowIfNull(path);
         ArgumentNullException.ThrowIfNull(time);
@@ -70,25 +70,19 @@ public sealed class ReplaySession : IConsoleSession
     }
 
     /// <inheritdoc />
-    public SessionStatus Status => _status;
+    public override SessionStatus Status => _status;
 
     /// <inheritdoc />
-    public IReadOnlyList<ControllerView> Controllers => [];
+    public override SignalRing Signals { get; }
 
     /// <inheritdoc />
-    public SignalRing Signals { get; }
+    public override RobotModelView Model { get; }
 
     /// <inheritdoc />
-    public IReadOnlyList<ComponentTiming> Timings => [];
+    public override SurgeonView Surgeon { get; } = new([], [], []);
 
     /// <inheritdoc />
-    public RobotModelView Model { get; }
-
-    /// <inheritdoc />
-    public SurgeonView Surgeon { get; } = new([], [], []);
-
-    /// <inheritdoc />
-    public WorkspaceView Workspace { get; } = new([]);
+    public override WorkspaceView Workspace { get; } = new([]);
 
     /// <summary>Plays or pauses.</summary>
     public void Play(bool playing) => Control(() => _playing = playing);
@@ -133,80 +127,24 @@ public sealed class ReplaySession : IConsoleSession
     public IReadOnlyList<EventEntry> Timeline => [.. _data.Timeline.Select((e, i) => new EventEntry(i + 1, e.Seconds, e.Source, e.Message))];
 
     /// <inheritdoc />
-    public IReadOnlyList<EventEntry> EventsAfter(long after)
+    public override IReadOnlyList<EventEntry> EventsAfter(long after)
     {
         var position = PositionSeconds;
         return [.. Timeline.Where(e => e.Sequence > after && e.TimeSeconds <= position)];
     }
 
-    /// <inheritdoc />
-    public Task<CommandResult> SetScaleAsync(string arm, double ratio) => Refused();
-
-    /// <inheritdoc />
-    public void NoteCommand(string who, string what)
-    {
-        // a replay records nothing
-    }
-
-    /// <inheritdoc />
-    public string? RecordingFile => null;
-
-    /// <inheritdoc />
-    public Task<CommandResult> RecordAsync(bool on) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> DiscoverAsync() => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> RenameAsync(int controllerId, string name) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> ReloadParametersAsync(int controllerId) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> RebootAsync(int controllerId) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> WriteParameterAsync(string motor, string parameter, double value) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> JogAsync(string motor, double degPerS) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> SetpointAsync(string motor, double deg) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> ReleaseAsync(string motor) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> TorqueAsync(bool on) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> PedalAsync(bool down) => Refused();
-
     /// <summary>Accepted, as everywhere: a replay has no motors to stop.</summary>
-    public Task<CommandResult> EmergencyStopAsync() => Task.FromResult(CommandResult.Ok("a replay: no motors run"));
+    public override Task<CommandResult> EmergencyStopAsync() => Task.FromResult(CommandResult.Ok("a replay: no motors run"));
 
     /// <inheritdoc />
-    public Task<CommandResult> HomeAsync(string? motor) => Refused();
-
-    /// <inheritdoc />
-    public Task<CommandResult> ClearFaultsAsync() => Refused();
-
-    /// <summary>A replay has no motors.</summary>
-    public void StopMotorsNow(string reason)
-    {
-    }
-
-    /// <inheritdoc />
-    public SessionEnd Close()
+    public override SessionEnd Close()
     {
         _timer?.Dispose();
         return new SessionEnd(_status with { Session = "stopped" }, null, EventsAfter(0), []);
     }
 
     /// <inheritdoc />
-    public void Dispose()
+    protected override void Dispose(bool disposing)
     {
         _timer?.Dispose();
         lock (_gate)
@@ -214,6 +152,8 @@ public sealed class ReplaySession : IConsoleSession
             _rows.Dispose();
             _data.Dispose();
         }
+
+        base.Dispose(disposing);
     }
 
     /// <summary>Runs a read of the file; a damaged chunk pauses the playback where it is and is said once.</summary>
@@ -283,6 +223,4 @@ public sealed class ReplaySession : IConsoleSession
             0,
             new BusCounters(0, 0, 0, 0, 0));
     }
-
-    private static Task<CommandResult> Refused() => Task.FromResult(CommandResult.Fail(CommandOutcome.Refused, Refusal));
 }
