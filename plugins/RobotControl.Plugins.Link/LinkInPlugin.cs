@@ -10,7 +10,9 @@ namespace RobotControl.Plugins.Link;
 /// each tick outputs the newest sample's values (one output per signal), its age in ms (wire it to the robot's
 /// <c>arm.input_age_ms</c>: the master timeout applies unchanged), <c>connected</c>, and the counts of gaps,
 /// reordered or duplicate samples and bad frames. Before the first sample the values are 0 and the age is
-/// <see cref="NoSampleAgeMs"/>, so nothing stale ever shows as fresh. The tick never allocates and never waits.
+/// <see cref="NoSampleAgeMs"/>, so nothing stale ever shows as fresh. Signals listed in <c>ages</c> are ages at the
+/// sending end (a Touch's sample age): each is output with the link's own age added. The tick never allocates and
+/// never waits.
 /// </summary>
 [PluginType("link_in", Description = "Link, receiving end: outputs the named signals last received on a NATS subject, their age, and counts of gaps, reordering and bad frames.")]
 public sealed class LinkInPlugin : Plugin<LinkInSettings>, IDisposable
@@ -27,6 +29,7 @@ public sealed class LinkInPlugin : Plugin<LinkInSettings>, IDisposable
     internal const string BadFramesPort = "bad_frames";
 
     private readonly OutputPort[] _values;
+    private readonly bool[] _isAge;
     private readonly OutputPort _age;
     private readonly OutputPort _connected;
     private readonly OutputPort _fresh;
@@ -47,7 +50,11 @@ public sealed class LinkInPlugin : Plugin<LinkInSettings>, IDisposable
     {
         ArgumentNullException.ThrowIfNull(context);
         Signals = LinkSignals.Parse(Settings.Signals);
-        _values = [.. Signals.Select(s => DeclareOutput(s, SafeValue.HoldLastFinite, "", $"{s}, received on {Settings.Subject} (0 until the first sample)"))];
+        var ages = LinkSignals.ParseSubset(Settings.Ages);
+        _isAge = [.. Signals.Select(s => ages.Contains(s, StringComparer.Ordinal))];
+        _values = [.. Signals.Select((s, i) => _isAge[i]
+            ? DeclareOutput(s, SafeValue.Initial, "ms", $"{s}, an age received on {Settings.Subject}, plus this link's sample age ({NoSampleAgeMs:G} before the first sample)", NoSampleAgeMs)
+            : DeclareOutput(s, SafeValue.HoldLastFinite, "", $"{s}, received on {Settings.Subject} (0 until the first sample)"))];
         _age = DeclareOutput(AgePort, SafeValue.Initial, "ms", $"age of the values: loop time since the sample arrived plus its transit (receiver's wall clock minus the sender's); {NoSampleAgeMs:G} before the first sample. Wire it to the robot's arm.input_age_ms (the master timeout)", NoSampleAgeMs);
         _connected = DeclareOutput(ConnectedPort, SafeValue.Zero, "", "1 while the connection to the server is open");
         _fresh = DeclareOutput(FreshPort, SafeValue.Zero, "", "1 while the values are younger than stale_after_ms");
@@ -98,7 +105,8 @@ public sealed class LinkInPlugin : Plugin<LinkInSettings>, IDisposable
         var show = have && (fresh || Settings.WhenStale == StaleValues.Hold);
         for (var i = 0; i < _values.Length; i++)
         {
-            Write(_values[i], show ? sample.Values[i] : 0);
+            // An age counts the link's own: it never shows younger than the sample it came in, stale or not.
+            Write(_values[i], _isAge[i] ? (have ? Math.Max(0, sample.Values[i]) + age : NoSampleAgeMs) : show ? sample.Values[i] : 0);
         }
 
         Write(_age, age);

@@ -92,4 +92,22 @@ public sealed record LinkInSettings : LinkSettings
     /// <summary>What the values show while stale.</summary>
     [Setting("Values while the latest sample is stale: hold (the last received) or zero.")]
     public StaleValues WhenStale { get; init; } = StaleValues.Hold;
+
+    /// <summary>The signals that are ages (ms) at the sending end: each is output with this link's sample age added.</summary>
+    [Setting("Signals that are ages in ms at the sending end (e.g. a Touch's sample_age_ms), comma-separated, each one of signals: each is output plus this link's sample age, so the age at this end counts the link too; before the first sample, and whatever when_stale says, an age is never shown younger than the link's.")]
+    public string Ages { get; init; } = "";
+
+    /// <inheritdoc />
+    public override IEnumerable<JsonProblem> CheckConsistency()
+    {
+        foreach (var problem in base.CheckConsistency())
+        {
+            yield return problem;
+        }
+
+        if (LinkSignals.CheckSubset(Ages, Signals) is { } agesProblem)
+        {
+            yield return new JsonProblem("ages", agesProblem);
+        }
+    }
 }

@@ -45,4 +45,28 @@ internal static class LinkSignals
 
         return null;
     }
+
+    /// <summary>The names of <paramref name="subset"/> (empty: none), each one of the link's signals; the settings were checked.</summary>
+    public static string[] ParseSubset(string subset) => string.IsNullOrWhiteSpace(subset) ? [] : Parse(subset);
+
+    /// <summary>A problem with <paramref name="subset"/>, a list of some of <paramref name="signals"/>, or null.</summary>
+    public static string? CheckSubset(string subset, string signals)
+    {
+        var all = Parse(signals);
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var name in ParseSubset(subset))
+        {
+            if (!all.Contains(name, StringComparer.Ordinal))
+            {
+                return $"'{name}' is not one of the link's signals ({string.Join(", ", all)})";
+            }
+
+            if (!seen.Add(name))
+            {
+                return $"'{name}' is listed twice";
+            }
+        }
+
+        return null;
+    }
 }

@@ -89,6 +89,39 @@ public sealed class LinkRealServerTests
     }
 
     [Fact]
+    public void An_age_carried_by_the_link_comes_out_with_the_links_own_age_added_and_is_never_younger_than_it()
+    {
+        using var server = NatsServer.Start();
+        var subject = LinkTestSupport.NewSubject();
+        using var outPlugin = LinkTestSupport.Out(server.Url, subject, "x,touch_age");
+        using var inPlugin = new LinkInPlugin(
+            new LinkInSettings { Url = server.Url, Subject = subject, Signals = "x,touch_age", Ages = "touch_age", StaleAfterMs = 50, WhenStale = StaleValues.Zero },
+            RobotControl.Plugins.Sdk.PluginContext.Standalone("in"));
+        var sender = new PluginDriver(outPlugin).Start();
+        var receiver = new PluginDriver(inPlugin).Start();
+        receiver.Tick();
+        Assert.Equal(LinkInPlugin.NoSampleAgeMs, receiver["touch_age"]); // before the first sample: never heard from, not 0
+
+        LinkTestSupport.WaitFor(() => outPlugin.IsConnected && inPlugin.IsConnected, "both ends connected");
+        while (inPlugin.Received == 0)
+        {
+            sender.Set(("x", 5), ("touch_age", 3)).Tick();
+            Thread.Sleep(5);
+        }
+
+        Thread.Sleep(50); // the samples still on the way arrive
+        receiver.Tick();
+        Assert.Equal(3 + receiver["sample_age_ms"], receiver["touch_age"], 1e-9);
+        Assert.Equal(5, receiver["x"]);
+
+        receiver.Tick(200); // stale: when_stale zeroes the values, but an age keeps growing with the link's
+        Assert.Equal(0, receiver["fresh"]);
+        Assert.Equal(0, receiver["x"]);
+        Assert.Equal(3 + receiver["sample_age_ms"], receiver["touch_age"], 1e-9);
+        Assert.True(receiver["touch_age"] > 200, $"touch_age {receiver["touch_age"]} ms");
+    }
+
+    [Fact]
     public async Task Gaps_reordering_duplicates_and_malformed_frames_from_another_publisher_are_counted_not_thrown()
     {
         using var server = NatsServer.Start();

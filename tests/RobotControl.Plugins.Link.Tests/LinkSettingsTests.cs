@@ -29,6 +29,15 @@ public sealed class LinkSettingsTests
     }
 
     [Theory]
+    [InlineData("x,age", "age,z", "ages: 'z' is not one of the link's signals (x, age)")]
+    [InlineData("x,age", "age,age", "ages: 'age' is listed twice")]
+    public void Ages_that_are_not_the_links_signals_get_one_line_naming_the_setting(string signals, string ages, string expected)
+    {
+        var error = Assert.Throws<SettingsException>(() => new LinkInPlugin(new LinkInSettings { Signals = signals, Ages = ages }, PluginContext.Standalone("from_surgeon")));
+        Assert.Equal($"'from_surgeon': invalid settings: {expected}", error.Message);
+    }
+
+    [Theory]
     [InlineData("url", "tls://127.0.0.1:4222", "url: 'tls://127.0.0.1:4222': tls:// is not supported yet (plain nats:// only; TLS is not done yet, see docs/link.md)")]
     [InlineData("url", "nats://me:secret@127.0.0.1:4222", "url: 'nats://me:secret@127.0.0.1:4222': give credentials in user/password or token, not in the URL")]
     [InlineData("signals", "x,y,x", "signals: 'x' is listed twice")]
