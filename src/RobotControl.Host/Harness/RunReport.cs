@@ -54,6 +54,19 @@ public sealed record RunReport(
     /// <summary>What the session recording wrote (<c>--record</c>; null: not recorded). Not part of <c>report.json</c>.</summary>
     public Recording.RecordingSummary? Recording { get; init; }
 
+    /// <summary>The loop's figures as every run report writes them: <c>duration_s</c>, <c>ticks</c>, <c>deadline_misses</c>, <c>tick_us</c> {median, p99, max}.</summary>
+    internal static void WriteLoop(Utf8JsonWriter w, double durationSeconds, long ticks, long deadlineMisses, double medianUs, double p99Us, double maxUs)
+    {
+        w.WriteNumber("duration_s", Math.Round(durationSeconds, 6));
+        w.WriteNumber("ticks", ticks);
+        w.WriteNumber("deadline_misses", deadlineMisses);
+        w.WriteStartObject("tick_us");
+        w.WriteNumber("median", Math.Round(medianUs, 2));
+        w.WriteNumber("p99", Math.Round(p99Us, 2));
+        w.WriteNumber("max", Math.Round(maxUs, 2));
+        w.WriteEndObject();
+    }
+
     /// <summary>The report as JSON in the documented schema.</summary>
     public string ToJson()
     {
@@ -61,14 +74,7 @@ public sealed record RunReport(
         using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
         {
             w.WriteStartObject();
-            w.WriteNumber("duration_s", Math.Round(DurationSeconds, 6));
-            w.WriteNumber("ticks", Ticks);
-            w.WriteNumber("deadline_misses", DeadlineMisses);
-            w.WriteStartObject("tick_us");
-            w.WriteNumber("median", Math.Round(TickMedianUs, 2));
-            w.WriteNumber("p99", Math.Round(TickP99Us, 2));
-            w.WriteNumber("max", Math.Round(TickMaxUs, 2));
-            w.WriteEndObject();
+            WriteLoop(w, DurationSeconds, Ticks, DeadlineMisses, TickMedianUs, TickP99Us, TickMaxUs);
             w.WriteStartObject("tracking_error_mm");
             w.WriteNumber("rms", Math.Round(TrackingRmsMm, 4));
             w.WriteNumber("max", Math.Round(TrackingMaxMm, 4));

@@ -82,6 +82,7 @@ internal sealed class RunCommand : ICliCommand
         }
 
         RunOptions options;
+        bool hasRobot;
         try
         {
             isVirtual = extras.ResolveVirtual(isVirtual);
@@ -99,12 +100,17 @@ internal sealed class RunCommand : ICliCommand
                 Record = extras.Record?.Options(error),
                 TickCost = extras.TickCostFor(isVirtual),
             };
-            RunPreflight.Check(options, catalog);
+            hasRobot = RunPreflight.Check(options, catalog);
         }
         catch (Exception ex) when (ex is FormatException or GraphException or RobotDataException)
         {
             error.WriteLine(ex.Message);
             return 2;
+        }
+
+        if (!hasRobot)
+        {
+            return StationCommand.Run(options, catalog, reportPath, output, error);
         }
 
         var c = CultureInfo.InvariantCulture;
