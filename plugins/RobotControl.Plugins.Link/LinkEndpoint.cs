@@ -9,8 +9,8 @@ namespace RobotControl.Plugins.Link;
 /// </summary>
 internal static class LinkEndpoint
 {
-    /// <summary>A problem with <paramref name="url"/>, or null when it may be used.</summary>
-    public static string? Check(string url, bool allowPlaintextRemote)
+    /// <summary>A problem with <paramref name="url"/>, or null when it may be used; <paramref name="allowWith"/> says how a plain-text remote server is allowed.</summary>
+    public static string? Check(string url, bool allowPlaintextRemote, string allowWith = "set allow_plaintext_remote to true")
     {
         if (!Uri.TryCreate(url, UriKind.Absolute, out var uri) || uri.Host.Length == 0)
         {
@@ -34,7 +34,7 @@ internal static class LinkEndpoint
 
         if (!IsLoopback(uri.Host) && !allowPlaintextRemote)
         {
-            return $"'{url}': {uri.Host} is not the loopback interface and the link is plain text (samples and credentials unencrypted); set allow_plaintext_remote to true to use it anyway";
+            return $"'{url}': {uri.Host} is not the loopback interface and the link is plain text (samples and credentials unencrypted); {allowWith} to use it anyway";
         }
 
         return null;
@@ -65,16 +65,21 @@ internal static class LinkEndpoint
         || (IPAddress.TryParse(host.Trim('[', ']'), out var address) && IPAddress.IsLoopback(address));
 
     /// <summary>The client options of a link (the settings were checked).</summary>
-    public static NatsOpts Options(LinkSettings settings, string instanceName) => NatsOpts.Default with
+    public static NatsOpts Options(LinkSettings settings, string instanceName) => Options(settings.Url, instanceName) with
     {
-        Url = settings.Url,
-        Name = instanceName,
         AuthOpts = NatsAuthOpts.Default with
         {
             Username = settings.User.Length > 0 ? settings.User : null,
             Password = settings.Password.Length > 0 ? settings.Password : null,
             Token = settings.Token.Length > 0 ? settings.Token : null,
         },
+    };
+
+    /// <summary>The client options of a connection to <paramref name="url"/> (checked), without credentials: reconnecting by itself, never giving up.</summary>
+    public static NatsOpts Options(string url, string name) => NatsOpts.Default with
+    {
+        Url = url,
+        Name = name,
         RetryOnInitialConnect = true,
         MaxReconnectRetry = -1,
         ReconnectWaitMin = TimeSpan.FromMilliseconds(50),

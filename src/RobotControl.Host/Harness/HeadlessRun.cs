@@ -128,12 +128,15 @@ public static class HeadlessRun
     private static CancellationTokenRegistration MotorsOffAtStop(RunOptions options, RobotSession session) =>
         options.Stop.Register(() => session.StopMotorsNow("stop requested: motors off"));
 
-    /// <summary>The command line's E-STOP (<see cref="RunOptions.EmergencyStop"/>) goes to the supervisor, as any operator E-STOP.</summary>
-    private static CancellationTokenRegistration OperatorStop(RunOptions options, SafetySupervisor supervisor, SessionRecorder? recorder) =>
-        options.EmergencyStop.Register(() =>
+    /// <summary>The command line's and the link's E-STOP (<see cref="RunOptions.EmergencyStop"/>, <see cref="RunOptions.LinkEmergencyStop"/>) go to the supervisor, as any operator E-STOP.</summary>
+    private static OperatorStops OperatorStop(RunOptions options, SafetySupervisor supervisor, SessionRecorder? recorder) =>
+        new(Register("cli", "E-STOP from the command line", supervisor, recorder, options.EmergencyStop), Register("link", "E-STOP from the surgeon's station", supervisor, recorder, options.LinkEmergencyStop));
+
+    private static CancellationTokenRegistration Register(string source, string reason, SafetySupervisor supervisor, SessionRecorder? recorder, CancellationToken token) =>
+        token.Register(() =>
         {
-            supervisor.EmergencyStop("cli", "E-STOP from the command line");
-            recorder?.OperatorCommand("cli", "E-STOP");
+            supervisor.EmergencyStop(source, reason);
+            recorder?.OperatorCommand(source, "E-STOP");
         });
 
     /// <summary>
@@ -329,5 +332,15 @@ public static class HeadlessRun
     private sealed class RestoreOnDispose(Action restore) : IDisposable
     {
         public void Dispose() => restore();
+    }
+}
+
+/// <summary>The run's operator E-STOP registrations (command line, link), undone together.</summary>
+internal readonly record struct OperatorStops(CancellationTokenRegistration CommandLine, CancellationTokenRegistration Link) : IDisposable
+{
+    public void Dispose()
+    {
+        CommandLine.Dispose();
+        Link.Dispose();
     }
 }

@@ -32,6 +32,12 @@ public sealed record RunOptions
     public CancellationToken EmergencyStop { get; init; }
 
     /// <summary>
+    /// Cancelled when the surgeon's station asks for an emergency stop over the link (<c>--link</c>, docs/link.md): as
+    /// <see cref="EmergencyStop"/>, with source <c>link</c> in the report.
+    /// </summary>
+    public CancellationToken LinkEmergencyStop { get; init; }
+
+    /// <summary>
     /// The GC latency mode of a real-time run, set for the run and restored after it. SustainedLowLatency by default:
     /// `bench realtime` measured 0.89 % deadline misses with it and 8.1 % with the default (Interactive), 120 s each.
     /// </summary>

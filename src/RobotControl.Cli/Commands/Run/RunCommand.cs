@@ -7,6 +7,7 @@ using RobotControl.Cli.Output;
 using RobotControl.Definitions.Loading;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Session;
+using RobotControl.Plugins.Link.Stations;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.GraphFiles;
@@ -41,6 +42,9 @@ internal sealed class RunCommand : ICliCommand
         var record = RecordOptions.Create();
         var tickCost = new Option<string>("--tick-cost") { Description = "With --virtual: measured (default: a tick's CPU time counts against its period, so a graph too slow for its rate misses) or free (ticks take no loop time: the run is exactly reproducible on any machine)", DefaultValueFactory = _ => "measured" };
         tickCost.AcceptOnlyFromAmong("measured", "free");
+        var link = new Option<string?>("--link") { Description = "Two stations (docs/link.md): the NATS server the surgeon's station sends its E-STOP through to the robot station, e.g. nats://127.0.0.1:4222 (with --station)" };
+        var station = new Option<string?>("--station") { Description = "With --link: the robot station's name on the server (its commands travel on rc.<station>.command), e.g. lb1" };
+        var linkPlaintext = new Option<bool>("--link-plaintext-remote") { Description = "With --link: allow a plain-text nats:// server off the loopback interface (commands and credentials cross the network unencrypted)" };
         var continueOnFault = new Option<bool>("--continue-on-fault") { Description = "Keep commanding when the robot faults (default: stop, motors off, exit 1)" };
         var command = new Command("run", "Headless run of a plug-in graph: live progress, summary, report.json.");
         command.Arguments.Add(graph);
@@ -56,6 +60,9 @@ internal sealed class RunCommand : ICliCommand
         command.Options.Add(tickCost);
         command.Options.Add(rtPriority);
         command.Options.Add(cpu);
+        command.Options.Add(link);
+        command.Options.Add(station);
+        command.Options.Add(linkPlaintext);
         record.AddTo(command);
         command.SetAction(parse => Run(
             parse.GetValue(graph)!.FullName,
@@ -66,7 +73,7 @@ internal sealed class RunCommand : ICliCommand
             parse.GetValue(plugins)?.FullName,
             parse.GetValue(seed),
             parse.GetValue(set) ?? [],
-            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)) { Record = record.Value(parse), TickCost = parse.GetValue(tickCost) == "free" ? VirtualTickCost.Free : VirtualTickCost.Measured },
+            new RunExtras(parse.GetValue(transport), parse.GetValue(continueOnFault), parse.GetValue(rtPriority), parse.GetValue(cpu)) { Record = record.Value(parse), TickCost = parse.GetValue(tickCost) == "free" ? VirtualTickCost.Free : VirtualTickCost.Measured, Link = parse.GetValue(link), Station = parse.GetValue(station), LinkPlaintextRemote = parse.GetValue(linkPlaintext) },
             parse.InvocationConfiguration.Output,
             parse.InvocationConfiguration.Error));
         return command;
@@ -83,6 +90,7 @@ internal sealed class RunCommand : ICliCommand
 
         RunOptions options;
         bool hasRobot;
+        StationAddress? linkAddress;
         try
         {
             isVirtual = extras.ResolveVirtual(isVirtual);
@@ -101,6 +109,7 @@ internal sealed class RunCommand : ICliCommand
                 TickCost = extras.TickCostFor(isVirtual),
             };
             hasRobot = RunPreflight.Check(options, catalog);
+            linkAddress = extras.LinkAddress();
         }
         catch (Exception ex) when (ex is FormatException or GraphException or RobotDataException)
         {
@@ -110,9 +119,34 @@ internal sealed class RunCommand : ICliCommand
 
         if (!hasRobot)
         {
-            return StationCommand.Run(options, catalog, reportPath, output, error);
+            return StationCommand.Run(options, catalog, linkAddress, reportPath, output, error);
         }
 
+        using var linkStop = new CancellationTokenSource();
+        var responder = linkAddress is null ? null : StationCommandResponder.Start(linkAddress, _ =>
+        {
+            linkStop.Cancel();
+            return "E-STOP taken: the supervisor trips operator (E_STOP) at the robot station's next bus cycle";
+        });
+        try
+        {
+            if (responder is not null)
+            {
+                output.WriteLine($"link: robot station '{responder.Address.Station}' takes the surgeon's E-STOP on {responder.Address.CommandSubject} at {responder.Address.Url}");
+            }
+
+            return RunRobot(options with { LinkEmergencyStop = linkStop.Token }, catalog, reportPath, output, error);
+        }
+        finally
+        {
+            responder?.DisposeAsync().AsTask().Wait();
+        }
+    }
+
+    private static int RunRobot(RunOptions options, PluginCatalog catalog, string? reportPath, TextWriter output, TextWriter error)
+    {
+        var graphPath = options.GraphPath;
+        var isVirtual = options.Virtual;
         var c = CultureInfo.InvariantCulture;
         output.WriteLine(string.Create(c, $"run {Path.GetFileName(graphPath)}: {(!isVirtual ? "real time" : options.TickCost == VirtualTickCost.Free ? "virtual robot (firmware in the loop), virtual clock, ticks take no loop time" : "virtual robot (firmware in the loop), virtual clock")}, {options.Duration.TotalSeconds:0.###} s, faults: {options.Inject}"));
         RunReport result;

@@ -2,6 +2,7 @@ using RobotControl.Bus.Transports;
 using RobotControl.Cli.Commands.Recording;
 using RobotControl.Host.Realtime;
 using RobotControl.Host.Session;
+using RobotControl.Plugins.Link.Stations;
 
 namespace RobotControl.Cli.Commands.Run;
 
@@ -14,6 +15,25 @@ internal sealed record RunExtras(string? Transport, bool ContinueOnFault, int Rt
 {
     /// <summary>The <c>--record</c> options (null: no recording).</summary>
     public RecordRequest? Record { get; init; }
+
+    /// <summary>The <c>--link</c> value: the NATS server the stations' commands go through (null: none).</summary>
+    public string? Link { get; init; }
+
+    /// <summary>The <c>--station</c> value: the robot station's name on the link.</summary>
+    public string? Station { get; init; }
+
+    /// <summary>The <c>--link-plaintext-remote</c> flag: a plain-text server off the loopback interface is allowed.</summary>
+    public bool LinkPlaintextRemote { get; init; }
+
+    /// <summary>The robot station's command address, or null without <c>--link</c>.</summary>
+    /// <exception cref="FormatException">One line: one of <c>--link</c> and <c>--station</c> without the other, or either malformed.</exception>
+    public StationAddress? LinkAddress() => (Link, Station) switch
+    {
+        (null, null) => null,
+        (null, _) => throw new FormatException("--station names the robot station on a link: give the server with --link nats://host:4222 too"),
+        (_, null) => throw new FormatException("--link needs --station <name>: the robot station's name on the server (e.g. lb1)"),
+        var (link, station) => StationAddress.Parse(link, station, LinkPlaintextRemote),
+    };
 
     /// <summary>The <c>--tick-cost</c> value.</summary>
     public VirtualTickCost TickCost { get; init; } = VirtualTickCost.Measured;

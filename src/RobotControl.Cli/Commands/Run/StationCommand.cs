@@ -2,6 +2,7 @@ using System.Globalization;
 using RobotControl.Cli.Output;
 using RobotControl.Host.Harness;
 using RobotControl.Host.Station;
+using RobotControl.Plugins.Link.Stations;
 using RobotControl.Runtime.Discovery;
 using RobotControl.Runtime.Graph;
 
@@ -13,14 +14,50 @@ namespace RobotControl.Cli.Commands.Run;
 /// </summary>
 internal static class StationCommand
 {
-    /// <summary>Runs <paramref name="options"/>' station; returns the exit code (0 clean, 1 plug-in faults or misses, 2 bad input, 130 interrupted).</summary>
-    public static int Run(RunOptions options, PluginCatalog catalog, string? reportPath, TextWriter output, TextWriter error)
+    /// <summary>What the station prints so the operator knows the E-STOP key.</summary>
+    public const string Help = "E-STOP: type e and Enter (from a pipe: a line 'estop'): sent to the robot station until it answers; Ctrl+C ends this station's run";
+
+    /// <summary>
+    /// Runs <paramref name="options"/>' station; with <paramref name="link"/>, the command line's E-STOP goes to that
+    /// robot station, repeated until answered. Returns the exit code (0 clean, 1 plug-in faults, misses or an E-STOP
+    /// not answered, 2 bad input, 130 interrupted).
+    /// </summary>
+    public static int Run(RunOptions options, PluginCatalog catalog, StationAddress? link, string? reportPath, TextWriter output, TextWriter error)
     {
         var c = CultureInfo.InvariantCulture;
         StationReport report;
         using var signals = new StopSignals(error);
+        var sender = link is null ? null : StationCommandSender.Open(link);
+        using var keys = ReferenceEquals(output, Console.Out) ? OperatorKeys.FromConsole(error) : null; // not when run in-process (tests)
+        var unanswered = 0;
+        Task? stopping = null;
+        using var estop = keys?.EmergencyStop.Register(() => stopping = Task.Run(async () =>
+        {
+            if (sender is null)
+            {
+                error.WriteLine("E-STOP: this station drives no motor and has no --link to a robot station: use the robot's E-STOP");
+                Interlocked.Increment(ref unanswered);
+                return;
+            }
+
+            var outcome = await sender.SendAsync(StationCommands.EmergencyStop).ConfigureAwait(false);
+            if (outcome.Answered)
+            {
+                error.WriteLine(string.Create(c, $"E-STOP acknowledged by robot station '{link!.Station}' {outcome.After.TotalMilliseconds:0} ms after the key ({outcome.Attempts} send(s)): {outcome.Line}"));
+            }
+            else
+            {
+                Interlocked.Increment(ref unanswered);
+                error.WriteLine($"E-STOP NOT ACKNOWLEDGED: {outcome.Line}: use the robot's hardware E-STOP");
+            }
+        }));
         try
         {
+            if (keys is not null)
+            {
+                output.WriteLine(Help);
+            }
+
             var run = options with { Stop = signals.Token, ProgressInterval = TimeSpan.FromSeconds(1) };
             output.WriteLine(string.Create(c, $"run {Path.GetFileName(options.GraphPath)}: a station without a robot, wall clock, {options.Duration.TotalSeconds:0.###} s"));
             report = StationRun.Run(run, catalog, p =>
@@ -36,6 +73,11 @@ internal static class StationCommand
         {
             error.WriteLine(ex.Message);
             return 2;
+        }
+        finally
+        {
+            stopping?.Wait(StationCommandSender.GiveUpAfter + TimeSpan.FromSeconds(1)); // an E-STOP on its way is answered or given up on before the run ends
+            sender?.DisposeAsync().AsTask().Wait();
         }
 
         foreach (var line in report.Lines())
@@ -54,6 +96,6 @@ internal static class StationCommand
             output.WriteLine($"report: {reportPath}");
         }
 
-        return report.ExitCode;
+        return unanswered > 0 && report.ExitCode == 0 ? 1 : report.ExitCode;
     }
 }

@@ -61,6 +61,64 @@ public sealed class TwoStationTests
     }
 
     [Fact]
+    public void An_e_stop_typed_at_the_surgeons_station_is_acknowledged_by_the_robot_station_which_goes_to_e_stop_from_the_link()
+    {
+        using var nats = NatsServer.Start();
+        using var sim = new SimulatorProcess(RunProcess.Patience);
+        var robotReport = Path.Combine(Directory.CreateTempSubdirectory("rc2st").FullName, "robot.json");
+        string[] link = ["--link", nats.Url, "--station", "lb1"];
+        using var robot = new RunProcess(["run", RobotGraph, "--transport", sim.Transport, "--duration", "8s", "--continue-on-fault", "--report", robotReport,
+            "--set", $"from_surgeon.url={nats.Url}", "--set", $"to_surgeon.url={nats.Url}", .. link]);
+        robot.WaitFor("t=", RunProcess.Patience);
+        Assert.Contains($"link: robot station 'lb1' takes the surgeon's E-STOP on rc.lb1.command at {nats.Url}", robot.Output, StringComparison.Ordinal);
+        using (var surgeon = new RunProcess(true, ["run", SurgeonGraph, "--duration", "4s", "--set", $"to_robot.url={nats.Url}", "--set", $"from_robot.url={nats.Url}", .. link]))
+        {
+            surgeon.WaitFor("t=", RunProcess.Patience);
+            surgeon.Type("estop");
+            surgeon.WaitFor("E-STOP acknowledged by robot station 'lb1'", RunProcess.Patience);
+            Assert.True(surgeon.WaitForExit(RunProcess.Patience) is 0 or 1, surgeon.Output);
+            Assert.DoesNotContain("NOT ACKNOWLEDGED", surgeon.Output, StringComparison.Ordinal);
+        }
+
+        Assert.True(robot.WaitForExit(RunProcess.Patience) is 0 or 1, robot.Output);
+        using var r = JsonDocument.Parse(File.ReadAllText(robotReport));
+        var safety = r.RootElement.GetProperty("safety");
+        Assert.Equal("E_STOP", safety.GetProperty("final_run_level").GetString());
+
+        // The only operator E-STOP of this run is the link's (nobody types at the robot station). It is recorded as a
+        // trip whatever the level; it takes the station to E_STOP unless a hard trip of a loaded machine got there first.
+        var trip = Assert.Single(safety.GetProperty("trips").EnumerateArray(), t => t.GetProperty("check").GetString() == "operator");
+        var stop = safety.GetProperty("run_levels").EnumerateArray().First(t => t.GetProperty("to").GetString() == "E_STOP");
+        if (stop.GetProperty("time_s").GetDouble() >= trip.GetProperty("time_s").GetDouble())
+        {
+            Assert.Equal(("link", "E-STOP from the surgeon's station"), (stop.GetProperty("source").GetString(), stop.GetProperty("reason").GetString()));
+        }
+        else
+        {
+            Assert.Equal("supervisor", stop.GetProperty("source").GetString()); // a named trip, before the key (printed: stop)
+        }
+
+        Assert.Equal(0, r.RootElement.GetProperty("stop").GetProperty("torque_on").GetArrayLength());
+    }
+
+    [Fact]
+    public void A_link_without_a_station_name_or_with_a_bad_one_gets_one_line_and_nothing_runs()
+    {
+        using (var run = new RunProcess("run", SurgeonGraph, "--duration", "1s", "--link", "nats://127.0.0.1:4222"))
+        {
+            Assert.Equal(2, run.WaitForExit(RunProcess.Patience));
+            Assert.Contains("--link needs --station <name>: the robot station's name on the server (e.g. lb1)", run.Output, StringComparison.Ordinal);
+        }
+
+        using (var run = new RunProcess("run", SurgeonGraph, "--duration", "1s", "--link", "nats://10.1.2.3:4222", "--station", "lb1"))
+        {
+            Assert.Equal(2, run.WaitForExit(RunProcess.Patience));
+            Assert.Contains("--link 'nats://10.1.2.3:4222': 10.1.2.3 is not the loopback interface and the link is plain text", run.Output, StringComparison.Ordinal);
+            Assert.DoesNotContain("ticks", run.Output, StringComparison.Ordinal);
+        }
+    }
+
+    [Fact]
     public void A_station_without_a_robot_refuses_the_options_that_need_one_in_one_line()
     {
         using var run = new RunProcess("run", SurgeonGraph, "--virtual", "--duration", "1s");

@@ -1,0 +1,103 @@
+using NATS.Client.Core;
+
+namespace RobotControl.Plugins.Link.Stations;
+
+/// <summary>
+/// The robot station's end of its commands: a subscriber on <see cref="StationAddress.CommandSubject"/> that hands
+/// each command to the station (an E-STOP goes to its safety supervisor, which never waits) and answers with what the
+/// station said. A sender repeats a command until answered, so each command carries an id: a repeat is answered again
+/// but acted on once. It runs on its own task and thread-pool threads, never on the loop or the bus thread, and the
+/// robot station never needs it to stop safely (losing the link holds the arms through the master timeout).
+/// </summary>
+public sealed class StationCommandResponder : IAsyncDisposable
+{
+    private readonly NatsConnection _connection;
+    private readonly Func<string, string> _act;
+    private readonly CancellationTokenSource _stop = new();
+    private readonly HashSet<string> _done = [];
+    private readonly Task _serving;
+
+    private StationCommandResponder(StationAddress address, Func<string, string> act)
+    {
+        Address = address;
+        _act = act;
+        _connection = new NatsConnection(LinkEndpoint.Options(address.Url, $"robot station {address.Station}"));
+        _serving = Task.Run(ServeAsync);
+    }
+
+    /// <summary>Where it listens.</summary>
+    public StationAddress Address { get; }
+
+    /// <summary>Commands acted on (repeats not counted).</summary>
+    public int Acted { get; private set; }
+
+    /// <summary>The last connection error, or null.</summary>
+    public string? LastError { get; private set; }
+
+    /// <summary>
+    /// Starts answering the commands on <paramref name="address"/>: <paramref name="act"/> gets each command's word
+    /// (<see cref="StationCommands.EmergencyStop"/>) once and returns the answer's line.
+    /// </summary>
+    public static StationCommandResponder Start(StationAddress address, Func<string, string> act)
+    {
+        ArgumentNullException.ThrowIfNull(address);
+        ArgumentNullException.ThrowIfNull(act);
+        return new StationCommandResponder(address, act);
+    }
+
+    /// <inheritdoc />
+    public async ValueTask DisposeAsync()
+    {
+        await _stop.CancelAsync().ConfigureAwait(false);
+        try
+        {
+            await _serving.ConfigureAwait(false);
+        }
+        catch (OperationCanceledException)
+        {
+            // stopped
+        }
+
+        await _connection.DisposeAsync().ConfigureAwait(false);
+        _stop.Dispose();
+    }
+
+    private async Task ServeAsync()
+    {
+        while (!_stop.IsCancellationRequested)
+        {
+            try
+            {
+                await foreach (var message in _connection.SubscribeAsync<string>(Address.CommandSubject, cancellationToken: _stop.Token).ConfigureAwait(false))
+                {
+                    var answer = Answer(message.Data ?? string.Empty);
+                    await message.ReplyAsync(answer, cancellationToken: _stop.Token).ConfigureAwait(false);
+                }
+            }
+            catch (Exception ex) when (!_stop.IsCancellationRequested)
+            {
+                LastError = $"{Address.Url}: {LinkConnection.Describe(ex)}";
+                await Task.Delay(TimeSpan.FromMilliseconds(200), _stop.Token).ConfigureAwait(false);
+            }
+        }
+    }
+
+    private string Answer(string request)
+    {
+        if (!StationCommands.TryParse(request, out var word, out var id))
+        {
+            return $"refused: '{request}' is not a command ({StationCommands.EmergencyStop} <id>)";
+        }
+
+        lock (_done)
+        {
+            if (!_done.Add(id))
+            {
+                return $"{word} {id}: done already";
+            }
+        }
+
+        Acted++;
+        return $"{word} {id}: {_act(word)}";
+    }
+}
