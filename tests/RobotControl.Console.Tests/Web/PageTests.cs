@@ -248,7 +248,7 @@ public sealed class PageTests(ConsoleFixture console)
         return (result[0], result[1..]);
     }
 
-    private static async Task Screenshot(IPage page, string name)
+    internal static async Task Screenshot(IPage page, string name)
     {
         if (Environment.GetEnvironmentVariable("CONSOLE_SCREENSHOTS") is { Length: > 0 } dir)
         {

@@ -38,6 +38,7 @@ public sealed partial class TuningPageTests(ConsoleFixture console)
         Assert.True(Math.Abs(desired - now.GetProperty("desiredDeg").GetDouble()) < 0.5, $"plotted desired {desired:F2} deg, the server's {now.GetProperty("desiredDeg").GetDouble():F2} deg");
         Assert.True(Math.Abs(measured - desired) < 2, $"measured {measured:F2} deg did not follow desired {desired:F2} deg");
         Assert.True(now.GetProperty("manual").GetBoolean()); // the desired is the jog's target, held since the stop
+        await PageTests.Screenshot(page, "tune.png");
 
         await console.Session.ReleaseAsync(Elbow);
         await PageTests.Click(page, "pedal-up", "run level PEDAL_UP");
