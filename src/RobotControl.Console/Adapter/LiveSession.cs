@@ -83,7 +83,7 @@ public sealed class LiveSession : IConsoleSession
             _session.Dispose();
             throw;
         }
-        _recorder = new RingRecorder(_session.Graph.Program, _session.Node, options.RingCapacity);
+        _recorder = new RingRecorder(_session.Graph.Program, _session.Node, _session.Robot, options.RingCapacity);
         var tap = new RecordingTap(_session.Node, _session.Robot, _recorder); // the MCAP recording's side on the loop thread, then the plots' ring
         slot.Target = tap;
         _mcap = new ConsoleRecording(_session, tap, _events, options.Record, options.RecordFolder);

@@ -1,4 +1,5 @@
 using RobotControl.Plugins.Sdk;
+using RobotControl.Robot.Bus;
 using RobotControl.Plugins.Sdk.Observation;
 using RobotControl.Runtime.Graph;
 using RobotControl.Runtime.Loop;
@@ -9,8 +10,10 @@ namespace RobotControl.WebConsole.Adapter;
 
 /// <summary>
 /// The loop's tick observer that feeds the console: after every tick it copies every output signal of the graph, plus
-/// the joint setpoints the robot node wrote (<c>robot.right.elbow.command</c>), into the <see cref="SignalRing"/>.
-/// Allocation-free per tick.
+/// the joint setpoints the robot node wrote (<c>robot.right.elbow.command</c>) and, per motor, the goal it follows
+/// (<c>robot.right.elbow.desired</c>: the loop's setpoint, or its jog or setpoint target while in manual, as last sent)
+/// and its measured axis output (<c>robot.right.elbow.measured</c>), into the <see cref="SignalRing"/>.
+/// Allocation-free per tick; the motors' values are the robot core's, read lock-free.
 /// </summary>
 internal sealed class RingRecorder : ITickObserver
 {
@@ -18,10 +21,14 @@ internal sealed class RingRecorder : ITickObserver
     private readonly RobotNode _node;
     private readonly double[] _row;
     private readonly int _jointCount;
+    private readonly BusRobot _robot;
+    private readonly RobotMotor[] _motors;
 
-    /// <summary>Creates the recorder and its ring for <paramref name="program"/> and the robot <paramref name="node"/>.</summary>
-    public RingRecorder(GraphProgram program, RobotNode node, int capacity)
+    /// <summary>Creates the recorder and its ring for <paramref name="program"/>, the robot <paramref name="node"/> and the motors of <paramref name="robot"/>.</summary>
+    public RingRecorder(GraphProgram program, RobotNode node, BusRobot robot, int capacity)
     {
+        _robot = robot;
+        _motors = [.. robot.Motors];
         _outputs = program.OutputSignals;
         _node = node;
         _jointCount = node.Robot.JointCount;
@@ -34,6 +41,14 @@ internal sealed class RingRecorder : ITickObserver
                 names.Add(CommandSignal(arm.Name, joint.Name));
                 units.Add("rad");
             }
+        }
+
+        foreach (var m in _motors)
+        {
+            names.Add(DesiredSignal(m.Config.FullName));
+            units.Add("rad");
+            names.Add(MeasuredSignal(m.Config.FullName));
+            units.Add("rad");
         }
 
         _row = new double[names.Count];
@@ -50,6 +65,12 @@ internal sealed class RingRecorder : ITickObserver
     /// <summary>The ring signal of an arm joint's measured value.</summary>
     public static string PositionSignal(string arm, string joint) => $"{RobotNode.InstanceName}.{arm}.{joint}.position";
 
+    /// <summary>The ring signal of the goal a motor (<c>arm.motor</c>) follows, output radians: the goal last sent to it.</summary>
+    public static string DesiredSignal(string motor) => $"{RobotNode.InstanceName}.{motor}.desired";
+
+    /// <summary>The ring signal of a motor's (<c>arm.motor</c>) measured axis output, radians.</summary>
+    public static string MeasuredSignal(string motor) => $"{RobotNode.InstanceName}.{motor}.measured";
+
     /// <inheritdoc />
     public void AfterTick(in TickContext context)
     {
@@ -61,6 +82,12 @@ internal sealed class RingRecorder : ITickObserver
             {
                 _node.LastCommanded(a).CopyTo(_row.AsSpan(at, _jointCount));
             }
+        }
+
+        foreach (var m in _motors)
+        {
+            _row[at++] = _robot.SentGoalRad(m);
+            _row[at++] = m.PositionRad;
         }
 
         Ring.Append(context.Elapsed.TotalSeconds, _row);

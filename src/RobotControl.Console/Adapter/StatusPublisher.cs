@@ -202,7 +202,12 @@ internal sealed class StatusPublisher : IDisposable
                 {
                     var (min, max) = p.Range(m.Config);
                     return new ParameterSpec(p.Key, p.Label, p.Unit, _parameters.Value(c.Id, m.Config.Channel, p.Key), p.FileValue(m.Config), min, max);
-                })])).ToList();
+                })],
+                _bus.SentGoalRad(m) * 180 / Math.PI,
+                _bus.LoopGoalRad(m) * 180 / Math.PI,
+                m.SpeedLimitRadS * 180 / Math.PI,
+                RingRecorder.DesiredSignal(m.Config.FullName),
+                RingRecorder.MeasuredSignal(m.Config.FullName))).ToList();
             list.Add(new ControllerView(
                 c.Id,
                 _modules.NameOf(c),

@@ -89,6 +89,11 @@ public sealed record ControllerView(
 /// <param name="TorqueOn">True while driven.</param>
 /// <param name="Errors">Latched motor error bits by name.</param>
 /// <param name="Parameters">Its persistent parameters as the module holds them.</param>
+/// <param name="DesiredDeg">The goal it follows, degrees: the goal last sent to it (its jog or setpoint target while manual, else the control loop's, under the step cap and any hold).</param>
+/// <param name="LoopCommandDeg">The goal the control loop's setpoints ask of it (the graph's command through the couplings), degrees: where a release hands it back to.</param>
+/// <param name="SpeedLimitDegS">Its speed limit at the axis output, degrees per second: how fast a goal moves under the step cap (a release's move takes the distance over this).</param>
+/// <param name="DesiredSignal">The ring signal of <paramref name="DesiredDeg"/> (radians), to plot it.</param>
+/// <param name="MeasuredSignal">The ring signal of its measured axis output (radians), to plot it.</param>
 public sealed record MotorView(
     string Name,
     string Joint,
@@ -101,7 +106,12 @@ public sealed record MotorView(
     bool Manual,
     bool TorqueOn,
     IReadOnlyList<string> Errors,
-    IReadOnlyList<ParameterSpec> Parameters);
+    IReadOnlyList<ParameterSpec> Parameters,
+    double DesiredDeg,
+    double LoopCommandDeg,
+    double SpeedLimitDegS,
+    string DesiredSignal,
+    string MeasuredSignal);
 
 /// <summary>One editable parameter of a motor.</summary>
 /// <param name="Key">Its key in the API.</param>

@@ -181,6 +181,16 @@ public sealed class BusRobot : IRobotPort, IBusCycle, IDisposable
         return _goals.HasWritten ? _goals.SentGoal(motor.Index) : motor.PositionRad;
     }
 
+    /// <summary>
+    /// The goal the control loop's setpoints ask of <paramref name="motor"/>, output radians (its position before the
+    /// first write): what it follows out of manual, and so where <see cref="RobotMotor.ReleaseManual"/> sends it.
+    /// </summary>
+    public double LoopGoalRad(RobotMotor motor)
+    {
+        ArgumentNullException.ThrowIfNull(motor);
+        return _goals.HasWritten ? _goals.LoopGoal(motor.Index) : motor.PositionRad;
+    }
+
     // --- requests any thread may make, taken up at the next write -------------------------------------------------
 
     /// <summary>Freezes every motor's goal at its measured position from the next write on; the setpoints are ignored until <see cref="ReleaseHold"/>.</summary>

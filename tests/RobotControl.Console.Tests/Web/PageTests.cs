@@ -46,8 +46,15 @@ public sealed class PageTests(ConsoleFixture console)
         var truth = await console.Session.VirtualOutputDeg(Elbow);
         Assert.True(Math.Abs(truth - after) < 1.0, $"page {after} deg, virtual robot {truth} deg");
         await Screenshot(page, "bus.png");
+        string? asked = null;
+        page.Dialog += (_, dialog) =>
+        {
+            asked = dialog.Message;
+            _ = dialog.AcceptAsync();
+        };
         await page.GetByRole(AriaRole.Row).Filter(new() { Has = page.GetByTestId($"position-{Elbow}") }).GetByRole(AriaRole.Button, new() { Name = "Release" }).ClickAsync();
         await Expect(page, "#message.ok", "back under the control loop");
+        Assert.StartsWith($"Release {Elbow}: it will move ", asked, StringComparison.Ordinal); // the jog took it further than the warning's 2 deg from the graph's command
         await Click(page, "pedal-up", "run level PEDAL_UP");
         await Close(page);
     }
@@ -197,7 +204,7 @@ public sealed class PageTests(ConsoleFixture console)
         (await http.PostAsync(path, new StringContent(json, System.Text.Encoding.UTF8, "application/json"))).EnsureSuccessStatusCode();
 
     /// <summary>Clicks a toolbar button and waits for the success message that contains <paramref name="text"/>.</summary>
-    private static async Task Click(IPage page, string testId, string text)
+    internal static async Task Click(IPage page, string testId, string text)
     {
         await page.GetByTestId(testId).ClickAsync();
         await Expect(page, "#message.ok", text);
@@ -241,7 +248,7 @@ public sealed class PageTests(ConsoleFixture console)
         return (result[0], result[1..]);
     }
 
-    private static async Task Screenshot(IPage page, string name)
+    internal static async Task Screenshot(IPage page, string name)
     {
         if (Environment.GetEnvironmentVariable("CONSOLE_SCREENSHOTS") is { Length: > 0 } dir)
         {

@@ -18,7 +18,7 @@ namespace RobotControl.WebConsole.Tests.Web;
 public sealed class StatusBarTests(ConsoleFixture console, ITestOutputHelper output)
 {
     /// <summary>Every page of the console (index.html's navigation).</summary>
-    public static readonly string[] Pages = ["bus", "plots", "view3d", "status", "editor", "surgeon"];
+    public static readonly string[] Pages = ["bus", "plots", "tune", "view3d", "status", "editor", "surgeon"];
 
     [Fact]
     public async Task Space_and_Esc_stop_the_robot_from_every_page_with_the_role_lapsed_or_held_by_another_console()

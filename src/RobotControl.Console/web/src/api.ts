@@ -84,6 +84,10 @@ export interface ParameterSpec { key: string; label: string; unit: string; value
 export interface MotorView {
   name: string; joint: string; channel: number; positionDeg: number; minDeg: number; maxDeg: number; currentA: number; pwm: number;
   manual: boolean; torqueOn: boolean; errors: string[]; parameters: ParameterSpec[];
+  /** The goal it follows (jog or setpoint target in manual, else the loop's), the loop's goal (where a release sends it), its speed limit. */
+  desiredDeg: number; loopCommandDeg: number; speedLimitDegS: number;
+  /** Ring signals (radians) of its desired and measured axis output. */
+  desiredSignal: string; measuredSignal: string;
 }
 export interface ControllerView {
   id: number; name: string; present: boolean; missedReplies: number; model: number; firmware: number; resetCause: string; resets: number; watchdog: string;

@@ -10,6 +10,7 @@ export type Page = (root: HTMLElement) => () => void;
 const pages: Record<string, () => Promise<Page>> = {
   bus: () => Promise.resolve(busPage),
   plots: async () => (await import('./pages/plots')).plotsPage,
+  tune: async () => (await import('./pages/tune')).tunePage,
   view3d: async () => (await import('./pages/view3d')).view3dPage,
   status: async () => (await import('./pages/status')).statusPage,
   editor: async () => (await import('./pages/editor/page')).editorPage,

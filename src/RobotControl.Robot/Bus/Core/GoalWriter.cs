@@ -25,6 +25,7 @@ internal sealed class GoalWriter
     private readonly BusInterruption _stop;
     private readonly double[] _goals;
     private readonly double[] _sent;
+    private readonly double[] _loop; // per motor: the goal the setpoints (the control loop's) ask, before manual commands, torque and hold
     private readonly double[] _held;
     private readonly double[] _q;
     private readonly double[] _a;
@@ -51,6 +52,7 @@ internal sealed class GoalWriter
         _time = client.Time;
         _goals = new double[layout.Motors.Length];
         _sent = [.. layout.Motors.Select(m => m.PositionRad)];
+        _loop = [.. layout.Motors.Select(m => m.PositionRad)];
         _held = new double[layout.Motors.Length];
         _q = new double[layout.JointCount];
         _a = new double[layout.JointCount];
@@ -119,6 +121,12 @@ internal sealed class GoalWriter
 
     /// <summary>The goal last sent to motor <paramref name="index"/>, output radians.</summary>
     public double SentGoal(int index) => Volatile.Read(ref _sent[index]);
+
+    /// <summary>
+    /// The goal the setpoints ask of motor <paramref name="index"/> (couplings and joint limits applied), output radians:
+    /// what the motor follows when not in manual, and what releasing a manual motor hands it back to.
+    /// </summary>
+    public double LoopGoal(int index) => Volatile.Read(ref _loop[index]);
 
     /// <summary>Cycle step <b>write</b>.</summary>
     public void Write()
@@ -209,6 +217,11 @@ internal sealed class GoalWriter
             {
                 _goals[tool.Index] = _seed.Jaw(_setpoints, arm, _jaw);
             }
+        }
+
+        foreach (var m in _layout.Motors)
+        {
+            Volatile.Write(ref _loop[m.Index], Math.Clamp(_goals[m.Index], m.Config.OutputMinRad, m.Config.OutputMaxRad));
         }
 
         var torque = _life.TorqueEnabled;

@@ -296,4 +296,28 @@ public sealed class GoalWriterTests
         rig.Cycles(1);
         Assert.False(robot.Faults.HasFlag(RobotFaults.ModuleReset));
     }
+
+    [Fact]
+    public void A_manual_motor_follows_its_manual_goal_while_its_loop_goal_stays_the_setpoint_that_release_hands_it_back_to()
+    {
+        using var rig = new TappedLb();
+        var robot = rig.Robot;
+        var elbow = robot.Motor("right.elbow");
+        rig.Cycles(3);
+        var q = new double[robot.Definition.JointCount];
+        robot.ReadJointPositions(0, q);
+        var manual = elbow.PositionRad;
+        elbow.SetSetpoint(manual);
+        q[3] += 30 * Deg; // the elbow joint drives the elbow motor alone (coupling 1)
+        robot.WriteJointSetpoints(0, q);
+        rig.Cycles(50);
+
+        Assert.Equal(q[3], robot.LoopGoalRad(elbow), 9);
+        Assert.Equal(manual, robot.SentGoalRad(elbow), 9);
+
+        elbow.ReleaseManual();
+        rig.Cycles(1);
+        Assert.True(robot.SentGoalRad(elbow) > manual, $"after release the goal sent moves toward the loop's: {robot.SentGoalRad(elbow)} rad, manual {manual} rad");
+        Assert.Equal(q[3], robot.LoopGoalRad(elbow), 9);
+    }
 }

@@ -1,9 +1,7 @@
-import { api, act, type ControllerView, type MotorView, type ParameterSpec, type StatusReply } from '../api';
+import { api, act, type ControllerView, type MotorView, type StatusReply } from '../api';
 import { el, button, fmt } from '../dom';
+import { homeAndRelease, jogControls, needsRole, parameterEditor, pedalButtons, setpointControls, showParameters } from '../motorcontrols';
 import { emergencyStop } from '../statusbar';
-
-/** Controls that need the operator role (role.ts disables them while this console watches). */
-const needsRole = { 'data-operator': '' };
 
 // Bus and controllers: discover; per controller its ID, friendly name, model, firmware, status and alerts; per motor
 // its live position/current/PWM, parameters (validated, written to FRAM after confirmation), jog, setpoint, home, torque.
@@ -12,8 +10,7 @@ export function busPage(root: HTMLElement): () => void {
     button('Discover', () => void act(() => api('POST', '/discover')).then(refresh), { 'data-testid': 'discover', ...needsRole }),
     button('Torque on', () => void act(() => api('POST', '/torque', { on: true })), { 'data-testid': 'torque-on', ...needsRole }),
     button('Torque off', () => void act(() => api('POST', '/torque', { on: false })), { 'data-testid': 'torque-off', ...needsRole }),
-    button('Pedal down', () => void act(() => api('POST', '/pedal', { down: true })), { 'data-testid': 'pedal-down', ...needsRole }),
-    button('Pedal up', () => void act(() => api('POST', '/pedal', { down: false })), { 'data-testid': 'pedal-up', ...needsRole }),
+    ...pedalButtons(),
     button('Home all', () => void act(() => api('POST', '/home')), { 'data-testid': 'home-all', ...needsRole }),
     button('Clear faults', () => void act(() => api('POST', '/faults/clear')), { 'data-testid': 'clear-faults', ...needsRole }),
     button('E-STOP', emergencyStop, { 'data-testid': 'estop', class: 'estop', 'aria-keyshortcuts': 'Space Escape' }),
@@ -62,9 +59,6 @@ function controllerCard(c: ControllerView): HTMLElement {
 }
 
 function motorRow(m: MotorView): HTMLElement {
-  const speed = el('input', { type: 'number', value: '10', step: '1', min: '0', 'aria-label': `jog speed of ${m.name}`, class: 'narrow' });
-  const jog = (sign: number) => act(() => api('POST', `/motors/${m.name}/jog`, { degPerS: sign * Number(speed.value) }));
-  const target = el('input', { type: 'number', step: '0.1', min: String(m.minDeg), max: String(m.maxDeg), 'aria-label': `setpoint of ${m.name}`, class: 'narrow' });
   return el('tr', { 'data-motor': m.name },
     el('td', {}, el('strong', {}, m.name), el('br'), el('small', {}, `ch ${m.channel}`)),
     el('td', { 'data-field': 'position', 'data-testid': `position-${m.name}` }),
@@ -73,35 +67,9 @@ function motorRow(m: MotorView): HTMLElement {
     el('td', { 'data-field': 'torque' }),
     el('td', { 'data-field': 'errors' }),
     el('td', {}, el('div', { class: 'params' }, ...m.parameters.map((p) => parameterEditor(m, p)))),
-    el('td', { class: 'jog' },
-      button('−', () => void jog(-1), { 'data-testid': `jog-minus-${m.name}`, ...needsRole }),
-      button('stop', () => void act(() => api('POST', `/motors/${m.name}/stop`)), { 'data-testid': `jog-stop-${m.name}` }),
-      button('+', () => void jog(1), { 'data-testid': `jog-plus-${m.name}`, ...needsRole }),
-      speed, el('small', {}, '°/s')),
-    el('td', {}, target,
-      button('Go', () => void act(() => api('POST', `/motors/${m.name}/setpoint`, { deg: Number(target.value) })), needsRole)),
-    el('td', {},
-      button('Home', () => void act(() => api('POST', `/motors/${m.name}/home`)), needsRole),
-      button('Release', () => void act(() => api('POST', `/motors/${m.name}/release`)), needsRole)));
-}
-
-function parameterEditor(m: MotorView, p: ParameterSpec): HTMLElement {
-  const input = el('input', { type: 'number', step: 'any', min: String(p.min), max: String(p.max), 'data-param': p.key, 'aria-label': `${p.label} of ${m.name}`, class: 'narrow' });
-  input.value = fmt(p.value, 3);
-  const write = button('Write', () => {
-    const value = Number(input.value);
-    if (input.value.trim() === '' || !Number.isFinite(value) || value < p.min || value > p.max) {
-      input.setCustomValidity(`give ${fmt(p.min, 3)}..${fmt(p.max, 3)} ${p.unit}`);
-      input.reportValidity();
-      return;
-    }
-    input.setCustomValidity('');
-    if (confirm(`Write ${p.label} = ${value} ${p.unit} of ${m.name} into the module's FRAM?`)) {
-      void act(() => api('PUT', `/motors/${m.name}/parameters/${p.key}`, { value })).then((ok) => { if (ok) input.dataset.dirty = ''; });
-    }
-  }, { 'data-testid': `write-${p.key}-${m.name}`, ...needsRole });
-  input.addEventListener('input', () => { input.dataset.dirty = '1'; });
-  return el('label', { title: `robot file: ${fmt(p.fileValue, 3)} ${p.unit}` }, `${p.label} `, input, ` ${p.unit} `, write);
+    el('td', { class: 'jog' }, ...jogControls(m)),
+    el('td', {}, ...setpointControls(m)),
+    el('td', {}, ...homeAndRelease(m)));
 }
 
 function update(c: ControllerView): void {
@@ -126,9 +94,6 @@ function update(c: ControllerView): void {
     set(row, 'pwm', String(m.pwm));
     set(row, 'torque', silent ? 'unknown: no answer' : `${m.torqueOn ? 'on' : 'off'}${m.manual ? ' · manual' : ''}`);
     set(row, 'errors', m.errors.join(', ') || '—');
-    for (const p of m.parameters) {
-      const input = row.querySelector<HTMLInputElement>(`input[data-param="${p.key}"]`);
-      if (input && !input.dataset.dirty && document.activeElement !== input) input.value = fmt(p.value, 3);
-    }
+    showParameters(row, m);
   }
 }

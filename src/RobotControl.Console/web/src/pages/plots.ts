@@ -2,30 +2,37 @@ import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import { api } from '../api';
 import { el, button } from '../dom';
+import { displayFactor, displayUnit, type AngleUnit } from '../angles';
 import { SignalStream, type Frame } from '../stream';
 
 interface Signal { name: string; unit: string }
 
-// Plots: any signal live (uPlot), several per plot, pause, time window, CSV export of the window.
+// Plots: any signal live (uPlot), several per plot, pause, time window, CSV export of the window. Angles (signals the
+// server gives in "rad") are shown in degrees unless the operator picks radians; the legend and the CSV say which.
 export function plotsPage(root: HTMLElement): () => void {
   const filter = el('input', { placeholder: 'filter signals', 'aria-label': 'filter signals' });
   const picker = el('select', { multiple: 'multiple', size: '12', 'aria-label': 'signals', 'data-testid': 'signal-picker' });
   const windowSelect = el('select', { 'aria-label': 'time window' }, ...[5, 10, 30, 60].map((s) => el('option', { value: String(s) }, `${s} s`)));
+  const anglesSelect = el('select', { 'aria-label': 'angles in', 'data-testid': 'angle-unit' }, el('option', { value: 'deg' }, 'degrees'), el('option', { value: 'rad' }, 'radians'));
   const pause = el('input', { type: 'checkbox', 'aria-label': 'pause' });
   const count = el('span', { 'data-testid': 'plot-samples' }, '0 samples');
   const holder = el('div', { class: 'plot', 'data-testid': 'plot' });
   root.append(el('div', { class: 'plots' },
     el('div', { class: 'picker' }, filter, picker, el('small', {}, 'Ctrl/Shift-click: several signals per plot')),
     el('div', {},
-      el('div', { class: 'toolbar' }, el('label', {}, 'window ', windowSelect), el('label', {}, pause, ' pause'),
+      el('div', { class: 'toolbar' }, el('label', {}, 'window ', windowSelect), el('label', {}, 'angles ', anglesSelect), el('label', {}, pause, ' pause'),
         button('Export CSV', exportCsv, { 'data-testid': 'export-csv' }), count),
       holder)));
 
   let signals: Signal[] = [];
   let chosen: string[] = [];
   let times: number[] = [];
-  let series: number[][] = [];
+  let series: number[][] = []; // as the server sends them (angles in radians)
   let plot: uPlot | null = null;
+  const angles = (): AngleUnit => anglesSelect.value as AngleUnit;
+  const unitOf = (name: string): string => signals.find((s) => s.name === name)?.unit ?? '';
+  const shown = (): number[][] => series.map((s, i) => { const f = displayFactor(unitOf(chosen[i]), angles()); return f === 1 ? s : s.map((v) => v * f); });
+  const label = (name: string): string => { const u = displayUnit(unitOf(name), angles()); return u ? `${name} (${u})` : name; };
 
   const stream = new SignalStream((names, frame: Frame) => {
     if (names.join() !== chosen.join()) return;
@@ -57,13 +64,19 @@ export function plotsPage(root: HTMLElement): () => void {
 
   function draw(): void {
     count.textContent = `${times.length} samples`;
-    plot?.setData([times, ...series] as uPlot.AlignedData);
+    plot?.setData([times, ...shown()] as uPlot.AlignedData);
   }
 
   function rebuild(): void {
     chosen = Array.from(picker.selectedOptions).map((o) => o.value);
     times = [];
     series = chosen.map(() => []);
+    makePlot();
+    stream.subscribe(chosen);
+  }
+
+  /** A new plot of the chosen signals over the rows kept, in the units shown. */
+  function makePlot(): void {
     plot?.destroy();
     plot = new uPlot({
       width: Math.max(400, holder.clientWidth || 800),
@@ -71,17 +84,17 @@ export function plotsPage(root: HTMLElement): () => void {
       scales: { x: { time: false } },
       axes: [{ label: 'session time (s)' }, {}],
       series: [{ label: 't (s)' }, ...chosen.map((name, i) => ({
-        label: `${name} ${signals.find((s) => s.name === name)?.unit ?? ''}`,
+        label: label(name),
         stroke: ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf'][i % 6],
         width: 1.5,
       }))],
-    }, [times, ...series] as uPlot.AlignedData, holder);
-    stream.subscribe(chosen);
+    }, [times, ...shown()] as uPlot.AlignedData, holder);
   }
 
   function exportCsv(): void {
-    const header = ['time_s', ...chosen].join(',');
-    const rows = times.map((t, r) => [t, ...series.map((s) => s[r])].join(','));
+    const header = ['time_s', ...chosen.map(label)].join(',');
+    const values = shown();
+    const rows = times.map((t, r) => [t, ...values.map((s) => s[r])].join(','));
     const blob = new Blob([[header, ...rows].join('\n') + '\n'], { type: 'text/csv' });
     const a = el('a', { href: URL.createObjectURL(blob), download: 'signals.csv' });
     a.click();
@@ -98,6 +111,7 @@ export function plotsPage(root: HTMLElement): () => void {
   filter.addEventListener('input', fill);
   picker.addEventListener('change', rebuild);
   windowSelect.addEventListener('change', () => { trim(); draw(); });
+  anglesSelect.addEventListener('change', makePlot);
   void api<Signal[]>('GET', '/signals').then((s) => {
     signals = s;
     fill();
