@@ -12,6 +12,7 @@ public sealed record StationAddress
         Url = url;
         Station = station;
         CommandSubject = $"rc.{station}.command";
+        StatusSubject = $"rc.{station}.status";
     }
 
     /// <summary>The NATS server.</summary>
@@ -22,6 +23,9 @@ public sealed record StationAddress
 
     /// <summary>The subject its commands travel on.</summary>
     public string CommandSubject { get; }
+
+    /// <summary>The subject it publishes its status on (<see cref="StationStatus"/>).</summary>
+    public string StatusSubject { get; }
 
     /// <summary>The address of station <paramref name="station"/> on <paramref name="url"/>.</summary>
     /// <exception cref="FormatException">One line naming the option (<c>--link</c> or <c>--station</c>) and what is wrong.</exception>

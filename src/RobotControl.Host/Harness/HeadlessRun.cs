@@ -95,7 +95,7 @@ public static class HeadlessRun
                     reported = loop.TickCount;
                     var elapsed = clock.GetElapsedTime(begin);
                     DrainEvents(events, elapsed, faults);
-                    progress?.Invoke(Progress(loop, meter!, elapsed, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
+                    progress?.Invoke(Progress(loop, meter!, elapsed, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString(), session.Supervisor));
                 }
             },
             safetyFaults.Remaining == 0 ? around : (l, at) =>
@@ -214,7 +214,7 @@ public static class HeadlessRun
                 {
                     nextProgress += options.ProgressInterval;
                     DrainEvents(events, now, faults);
-                    progress?.Invoke(Progress(loop, meter!, now, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString()));
+                    progress?.Invoke(Progress(loop, meter!, now, options.Duration, faults.Count + session.Graph.Program.FaultCount, bus.Faults.ToString(), session.Supervisor));
                 }
             }
         }
@@ -262,8 +262,16 @@ public static class HeadlessRun
         return meter = new TrackingMeter(node, port) { Next = tap };
     }
 
-    private static RunProgress Progress(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, TimeSpan duration, int faults, string robotFaults) =>
-        new(elapsed, duration, loop.TickCount, loop.Statistics.DeadlineMisses, meter.RmsMm, meter.LastErrorMm.Max(), faults, robotFaults);
+    private static RunProgress Progress(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, TimeSpan duration, int faults, string robotFaults, SafetySupervisor supervisor)
+    {
+        var trips = supervisor.TripCount;
+        return new(elapsed, duration, loop.TickCount, loop.Statistics.DeadlineMisses, meter.RmsMm, meter.LastErrorMm.Max(), faults, robotFaults)
+        {
+            RunLevel = supervisor.Level.Name(),
+            Trips = trips,
+            LastTrip = trips == 0 ? null : supervisor.Trips[^1].ToString(), // the list is copied only when there is a trip to name
+        };
+    }
 
     private static RunReport Report(ControlLoop loop, TrackingMeter meter, TimeSpan elapsed, RobotSession session, List<FaultEntry> faults, int reEngagements)
     {

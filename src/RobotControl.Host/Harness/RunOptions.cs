@@ -88,4 +88,14 @@ public sealed record RunOptions
 /// <param name="TrackingNowMm">Largest current tracking error over the arms.</param>
 /// <param name="Faults">Faults so far.</param>
 /// <param name="RobotFaults">The robot's fault flags now.</param>
-public sealed record RunProgress(TimeSpan Elapsed, TimeSpan Duration, long Ticks, long DeadlineMisses, double TrackingRmsMm, double TrackingNowMm, int Faults, string RobotFaults);
+public sealed record RunProgress(TimeSpan Elapsed, TimeSpan Duration, long Ticks, long DeadlineMisses, double TrackingRmsMm, double TrackingNowMm, int Faults, string RobotFaults)
+{
+    /// <summary>The supervisor's run level now, as the reports name it (e.g. <c>PEDAL_DOWN</c>).</summary>
+    public string RunLevel { get; init; } = string.Empty;
+
+    /// <summary>Trips so far.</summary>
+    public int Trips { get; init; }
+
+    /// <summary>The last trip in one line, or null.</summary>
+    public string? LastTrip { get; init; }
+}

@@ -13,7 +13,7 @@ public sealed class StationCommandTests
         using var server = NatsServer.Start();
         var address = StationAddress.Parse(server.Url, "lb1");
         var acted = new List<string>();
-        await using var responder = StationCommandResponder.Start(address, word =>
+        await using var responder = RobotStationEndpoint.Start(address, word =>
         {
             lock (acted)
             {
@@ -22,7 +22,7 @@ public sealed class StationCommandTests
 
             return "taken";
         });
-        await using var sender = StationCommandSender.Open(address);
+        await using var sender = SurgeonStationEndpoint.Open(address);
 
         var outcome = await sender.SendAsync(StationCommands.EmergencyStop);
         Assert.True(outcome.Answered, outcome.Line);

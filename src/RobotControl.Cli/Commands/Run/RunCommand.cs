@@ -123,7 +123,7 @@ internal sealed class RunCommand : ICliCommand
         }
 
         using var linkStop = new CancellationTokenSource();
-        var responder = linkAddress is null ? null : StationCommandResponder.Start(linkAddress, _ =>
+        var responder = linkAddress is null ? null : RobotStationEndpoint.Start(linkAddress, _ =>
         {
             linkStop.Cancel();
             return "E-STOP taken: the supervisor trips operator (E_STOP) at the robot station's next bus cycle";
@@ -135,7 +135,7 @@ internal sealed class RunCommand : ICliCommand
                 output.WriteLine($"link: robot station '{responder.Address.Station}' takes the surgeon's E-STOP on {responder.Address.CommandSubject} at {responder.Address.Url}");
             }
 
-            return RunRobot(options with { LinkEmergencyStop = linkStop.Token }, catalog, reportPath, output, error);
+            return RunRobot(options with { LinkEmergencyStop = linkStop.Token }, catalog, reportPath, output, error, p => responder?.Publish(new StationStatus(p.RunLevel, p.Trips, p.LastTrip)));
         }
         finally
         {
@@ -143,7 +143,7 @@ internal sealed class RunCommand : ICliCommand
         }
     }
 
-    private static int RunRobot(RunOptions options, PluginCatalog catalog, string? reportPath, TextWriter output, TextWriter error)
+    private static int RunRobot(RunOptions options, PluginCatalog catalog, string? reportPath, TextWriter output, TextWriter error, Action<RunProgress> onProgress)
     {
         var graphPath = options.GraphPath;
         var isVirtual = options.Virtual;
@@ -161,7 +161,7 @@ internal sealed class RunCommand : ICliCommand
         try
         {
             var interactive = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected && AnsiConsole.Profile.Capabilities.Interactive;
-            result = interactive ? RunWithProgressBar(options, catalog) : RunWithLines(options, catalog, output);
+            result = interactive ? RunWithProgressBar(options, catalog, onProgress) : RunWithLines(options, catalog, output, onProgress);
         }
         catch (GraphException ex)
         {
@@ -204,12 +204,13 @@ internal sealed class RunCommand : ICliCommand
             ("tracking rms", r.TrackingRmsMm), ("largest tracking error", r.TrackingMaxMm),
         }.FirstOrDefault(m => !double.IsFinite(m.Value)).Name;
 
-    private static RunReport RunWithLines(RunOptions options, PluginCatalog catalog, TextWriter output)
+    private static RunReport RunWithLines(RunOptions options, PluginCatalog catalog, TextWriter output, Action<RunProgress> onProgress)
     {
         var c = CultureInfo.InvariantCulture;
         var lastSecond = -1;
         return HeadlessRun.Run(options with { ProgressInterval = TimeSpan.FromMilliseconds(100) }, catalog, p =>
         {
+            onProgress(p);
             var second = (int)p.Elapsed.TotalSeconds;
             if (second != lastSecond && (second % 2 == 0 || p.Elapsed >= p.Duration))
             {
@@ -219,7 +220,7 @@ internal sealed class RunCommand : ICliCommand
         });
     }
 
-    private static RunReport RunWithProgressBar(RunOptions options, PluginCatalog catalog)
+    private static RunReport RunWithProgressBar(RunOptions options, PluginCatalog catalog, Action<RunProgress> onProgress)
     {
         RunReport? result = null;
         AnsiConsole.Progress()
@@ -227,8 +228,9 @@ internal sealed class RunCommand : ICliCommand
             .Start(ctx =>
             {
                 var task = ctx.AddTask("running", maxValue: options.Duration.TotalSeconds);
-                result = HeadlessRun.Run(options, catalog, p =>
+                result = HeadlessRun.Run(options with { ProgressInterval = TimeSpan.FromMilliseconds(100) }, catalog, p =>
                 {
+                    onProgress(p);
                     task.Value = p.Elapsed.TotalSeconds;
                     task.Description = string.Create(CultureInfo.InvariantCulture, $"t={p.Elapsed.TotalSeconds:F1}s rms {p.TrackingRmsMm:F2} mm now {p.TrackingNowMm:F2} mm misses {p.DeadlineMisses} faults {p.Faults}");
                 });

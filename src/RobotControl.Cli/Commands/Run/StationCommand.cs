@@ -27,7 +27,7 @@ internal static class StationCommand
         var c = CultureInfo.InvariantCulture;
         StationReport report;
         using var signals = new StopSignals(error);
-        var sender = link is null ? null : StationCommandSender.Open(link);
+        var sender = link is null ? null : SurgeonStationEndpoint.Open(link);
         using var keys = ReferenceEquals(output, Console.Out) ? OperatorKeys.FromConsole(error) : null; // not when run in-process (tests)
         var unanswered = 0;
         Task? stopping = null;
@@ -58,6 +58,8 @@ internal static class StationCommand
                 output.WriteLine(Help);
             }
 
+            sender?.Watch(output.WriteLine); // the robot station's run level and trips, and the link lost or back
+
             var run = options with { Stop = signals.Token, ProgressInterval = TimeSpan.FromSeconds(1) };
             output.WriteLine(string.Create(c, $"run {Path.GetFileName(options.GraphPath)}: a station without a robot, wall clock, {options.Duration.TotalSeconds:0.###} s"));
             report = StationRun.Run(run, catalog, p =>
@@ -76,7 +78,7 @@ internal static class StationCommand
         }
         finally
         {
-            stopping?.Wait(StationCommandSender.GiveUpAfter + TimeSpan.FromSeconds(1)); // an E-STOP on its way is answered or given up on before the run ends
+            stopping?.Wait(SurgeonStationEndpoint.GiveUpAfter + TimeSpan.FromSeconds(1)); // an E-STOP on its way is answered or given up on before the run ends
             sender?.DisposeAsync().AsTask().Wait();
         }
 

@@ -76,6 +76,7 @@ public sealed class TwoStationTests
             surgeon.WaitFor("t=", RunProcess.Patience);
             surgeon.Type("estop");
             surgeon.WaitFor("E-STOP acknowledged by robot station 'lb1'", RunProcess.Patience);
+            surgeon.WaitFor("robot station 'lb1': E_STOP", RunProcess.Patience); // its run level, published back
             Assert.True(surgeon.WaitForExit(RunProcess.Patience) is 0 or 1, surgeon.Output);
             Assert.DoesNotContain("NOT ACKNOWLEDGED", surgeon.Output, StringComparison.Ordinal);
         }
@@ -99,6 +100,39 @@ public sealed class TwoStationTests
         }
 
         Assert.Equal(0, r.RootElement.GetProperty("stop").GetProperty("torque_on").GetArrayLength());
+    }
+
+    [Fact]
+    public void The_server_killed_mid_run_leaves_the_robot_station_holding_its_arms_and_the_surgeons_station_saying_the_link_is_lost()
+    {
+        var nats = NatsServer.Start();
+        try
+        {
+            using var sim = new SimulatorProcess(RunProcess.Patience);
+            var robotReport = Path.Combine(Directory.CreateTempSubdirectory("rc2st").FullName, "robot.json");
+            string[] link = ["--link", nats.Url, "--station", "lb1"];
+            using var robot = new RunProcess(["run", RobotGraph, "--transport", sim.Transport, "--duration", "9s", "--continue-on-fault", "--report", robotReport,
+                "--set", $"from_surgeon.url={nats.Url}", "--set", $"to_surgeon.url={nats.Url}", .. link]);
+            robot.WaitFor("t=", RunProcess.Patience);
+            using var surgeon = new RunProcess(["run", SurgeonGraph, "--duration", "6s", "--set", $"to_robot.url={nats.Url}", "--set", $"from_robot.url={nats.Url}", .. link]);
+            surgeon.WaitFor("robot station 'lb1': PEDAL_DOWN", RunProcess.Patience); // following the surgeon's hands
+
+            nats.Kill();
+
+            surgeon.WaitFor("LINK LOST: no status from robot station 'lb1'", RunProcess.Patience);
+            Assert.True(surgeon.WaitForExit(RunProcess.Patience) is 0 or 1, surgeon.Output);
+            Assert.True(robot.WaitForExit(RunProcess.Patience) is 0 or 1, robot.Output);
+            using var r = JsonDocument.Parse(File.ReadAllText(robotReport));
+            var trips = r.RootElement.GetProperty("safety").GetProperty("trips").EnumerateArray().ToList();
+
+            // Held on the master timeout once the samples stopped: an age the link measured (not the 1e9 ms of "never
+            // heard from" at the start), graded hold.
+            Assert.Contains(trips, t => t.GetProperty("check").GetString() == "master_timeout" && t.GetProperty("measured").GetDouble() is > 50 and < 1e8 && t.GetProperty("action").GetString() == "hold");
+        }
+        finally
+        {
+            nats.Dispose();
+        }
     }
 
     [Fact]

@@ -3,27 +3,33 @@ using NATS.Client.Core;
 namespace RobotControl.Plugins.Link.Stations;
 
 /// <summary>
-/// The robot station's end of its commands: a subscriber on <see cref="StationAddress.CommandSubject"/> that hands
+/// The robot station's end of the link to the surgeon's station: its status out (<see cref="Publish"/> on
+/// <see cref="StationAddress.StatusSubject"/>) and its commands in: a subscriber on <see cref="StationAddress.CommandSubject"/> that hands
 /// each command to the station (an E-STOP goes to its safety supervisor, which never waits) and answers with what the
 /// station said. A sender repeats a command until answered, so each command carries an id: a repeat is answered again
 /// but acted on once. It runs on its own task and thread-pool threads, never on the loop or the bus thread, and the
 /// robot station never needs it to stop safely (losing the link holds the arms through the master timeout).
 /// </summary>
-public sealed class StationCommandResponder : IAsyncDisposable
+public sealed class RobotStationEndpoint : IAsyncDisposable
 {
     private readonly NatsConnection _connection;
     private readonly Func<string, string> _act;
     private readonly CancellationTokenSource _stop = new();
     private readonly HashSet<string> _done = [];
     private readonly Task _serving;
+    private StationStatus? _lastStatus;
+    private long _lastPublished;
 
-    private StationCommandResponder(StationAddress address, Func<string, string> act)
+    private RobotStationEndpoint(StationAddress address, Func<string, string> act)
     {
         Address = address;
         _act = act;
         _connection = new NatsConnection(LinkEndpoint.Options(address.Url, $"robot station {address.Station}"));
         _serving = Task.Run(ServeAsync);
     }
+
+    /// <summary>How often an unchanged status is published again (the surgeon's station's sign of life).</summary>
+    public static readonly TimeSpan StatusEvery = TimeSpan.FromMilliseconds(200);
 
     /// <summary>Where it listens.</summary>
     public StationAddress Address { get; }
@@ -38,11 +44,33 @@ public sealed class StationCommandResponder : IAsyncDisposable
     /// Starts answering the commands on <paramref name="address"/>: <paramref name="act"/> gets each command's word
     /// (<see cref="StationCommands.EmergencyStop"/>) once and returns the answer's line.
     /// </summary>
-    public static StationCommandResponder Start(StationAddress address, Func<string, string> act)
+    public static RobotStationEndpoint Start(StationAddress address, Func<string, string> act)
     {
         ArgumentNullException.ThrowIfNull(address);
         ArgumentNullException.ThrowIfNull(act);
-        return new StationCommandResponder(address, act);
+        return new RobotStationEndpoint(address, act);
+    }
+
+    /// <summary>
+    /// Publishes the station's status when it changed or <see cref="StatusEvery"/> has passed since the last; from any
+    /// thread but the loop's and the bus's (a caller's progress poll). Never waits: a publish without a connection is
+    /// dropped (the surgeon's station shows the link as lost after <see cref="SurgeonStationEndpoint.LostAfter"/>).
+    /// </summary>
+    public void Publish(StationStatus status)
+    {
+        ArgumentNullException.ThrowIfNull(status);
+        var now = Environment.TickCount64;
+        if (status == _lastStatus && now - _lastPublished < StatusEvery.TotalMilliseconds)
+        {
+            return;
+        }
+
+        _lastStatus = status;
+        _lastPublished = now;
+        if (_connection.ConnectionState == NatsConnectionState.Open)
+        {
+            _ = _connection.PublishAsync(Address.StatusSubject, status.ToJson()).AsTask().ContinueWith(t => LastError = t.Exception?.Message, TaskContinuationOptions.OnlyOnFaulted);
+        }
     }
 
     /// <inheritdoc />
