@@ -1,4 +1,4 @@
-import { api, act, type ControllerView, type MotorView, type ParameterSpec, type StatusReply } from '../api';
+import { api, act, markFirstValue, type ControllerView, type MotorView, type ParameterSpec, type StatusReply } from '../api';
 import { el, button, fmt } from '../dom';
 import { emergencyStop } from '../statusbar';
 
@@ -36,6 +36,7 @@ export function busPage(root: HTMLElement): () => void {
     for (const c of controllers) {
       update(c);
     }
+    if (controllers.some((c) => c.motors.length > 0)) markFirstValue(root);
   }
 
   const timer = setInterval(() => void refresh().catch(() => undefined), 300);
