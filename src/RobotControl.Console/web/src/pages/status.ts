@@ -58,7 +58,8 @@ export function statusPage(root: HTMLElement): () => void {
     const events = await api<EventEntry[]>('GET', `/events?after=${last}`);
     if (asked !== run) return;
     for (const e of events) {
-      last = Math.max(last, e.sequence);
+      if (e.sequence <= last) continue; // already shown: an answer to a refresh that overlapped this one
+      last = e.sequence;
       log.prepend(el('tr', {}, el('td', {}, `${fmt(e.timeSeconds, 3)} s`), el('td', {}, e.source), el('td', {}, e.message)));
     }
   }
