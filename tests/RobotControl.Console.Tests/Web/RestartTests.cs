@@ -109,18 +109,20 @@ public sealed class RestartTests(ConsoleFixture console)
         private readonly LiveSession _first;
         private ConsoleServer? _firstServer;
 
-        private Restart(LiveSession first, ConsoleServer server, IBrowserContext context)
+        private bool _secondServes;
+
+        private Restart(LiveSession first, LiveSession second, ConsoleServer server, IBrowserContext context)
         {
             _first = first;
             _firstServer = server;
             _context = context;
-            Second = first;
+            Second = second;
             Server = server;
         }
 
         public List<(string Name, IPage Page)> Tabs { get; } = [];
 
-        /// <summary>The second run's session (the first's until it starts).</summary>
+        /// <summary>The second run's session: opened before the first, so its session time is ahead of the first's.</summary>
         public LiveSession Second { get; private set; }
 
         /// <summary>The server now serving.</summary>
@@ -130,14 +132,21 @@ public sealed class RestartTests(ConsoleFixture console)
 
         public static async Task<Restart> Open(ConsoleFixture console, string[] pages)
         {
+            var second = ConsoleFixture.VirtualSession();
+            await Task.Delay(1000);
             var session = ConsoleFixture.VirtualSession();
             var server = await ConsoleServer.StartAsync(session, BindAddress.Parse("127.0.0.1:0"), null);
             var context = await console.Browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 900 }, AcceptDownloads = true });
-            var restart = new Restart(session, server, context);
+            var restart = new Restart(session, second, server, context);
             foreach (var name in pages)
             {
                 var tab = await context.NewPageAsync();
                 await tab.GotoAsync(ConsoleFixture.PageUrl(server, name));
+                if (name == "plots")
+                {
+                    await tab.GetByLabel("time window").SelectOptionAsync("60"); // the old samples stay in the window: a mix would show
+                }
+
                 restart.Tabs.Add((name, tab));
             }
 
@@ -186,14 +195,13 @@ public sealed class RestartTests(ConsoleFixture console)
         }
 
         /// <summary>
-        /// Starts the second run on the first's port and token. The pages' requests wait until its session time is a
-        /// second past <paramref name="aheadOf"/> (so its samples lie ahead of the old ones) and <paramref name="before"/>
-        /// has run on the new server.
+        /// Serves the second run on the first's port and token. The pages' requests wait until its session time is a
+        /// second past <paramref name="aheadOf"/> (so its samples lie ahead of the old ones; it was opened first, so this
+        /// is normally so already) and <paramref name="before"/> has run on the new server.
         /// </summary>
         public async Task StartTheSecondRun(double aheadOf, Action<ConsoleServer> before)
         {
             var open = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-            Second = ConsoleFixture.VirtualSession();
             Server = await ConsoleServer.StartAsync(Second, new ConsoleServerOptions
             {
                 Bind = BindAddress.Parse($"127.0.0.1:{Server.BaseUrl.Port}"),
@@ -204,6 +212,7 @@ public sealed class RestartTests(ConsoleFixture console)
                     await next(http).ConfigureAwait(false);
                 },
             });
+            _secondServes = true;
             var waited = Stopwatch.StartNew();
             while (Second.Status.SessionSeconds < aheadOf + 1)
             {
@@ -223,11 +232,12 @@ public sealed class RestartTests(ConsoleFixture console)
                 await _firstServer.DisposeAsync();
                 _first.Dispose();
             }
-            else
+            else if (_secondServes)
             {
                 await Server.DisposeAsync();
-                Second.Dispose();
             }
+
+            Second.Dispose();
         }
     }
 }
