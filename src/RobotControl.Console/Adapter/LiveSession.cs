@@ -193,7 +193,11 @@ public sealed class LiveSession : IConsoleSession
     public Task<CommandResult> PedalAsync(bool down) => Answered(_runLevel.PedalAsync(down));
 
     /// <inheritdoc />
-    public Task<CommandResult> EmergencyStopAsync() => Answered(_runLevel.EmergencyStopAsync());
+    /// <remarks>
+    /// Answered as soon as the run level is E_STOP (the stop applied), not after the snapshots: their publication is
+    /// started then and runs beside the answer, so a loaded publisher never holds the confirmation back.
+    /// </remarks>
+    public Task<CommandResult> EmergencyStopAsync() => AnsweredBeforePublishing(_runLevel.EmergencyStopAsync());
 
     /// <inheritdoc />
     public Task<CommandResult> ClearFaultsAsync() => Answered(_runLevel.ClearFaultsAsync());
@@ -266,6 +270,25 @@ public sealed class LiveSession : IConsoleSession
         },
         CancellationToken.None,
         TaskContinuationOptions.None,
+        TaskScheduler.Default);
+
+    /// <summary>
+    /// A command's answer as soon as it completed; the snapshots' publication (as in <see cref="Answered"/>) is started
+    /// then on the thread pool and not waited for. The E-STOP's: its answer says the stop is applied, which the
+    /// snapshots do not change.
+    /// </summary>
+    private Task<CommandResult> AnsweredBeforePublishing(Task<CommandResult> command) => command.ContinueWith(
+        t =>
+        {
+            if (!_stop.IsCancellationRequested)
+            {
+                _ = Task.Run(_publisher.PublishAfterCommand, CancellationToken.None);
+            }
+
+            return t.GetAwaiter().GetResult();
+        },
+        CancellationToken.None,
+        TaskContinuationOptions.ExecuteSynchronously,
         TaskScheduler.Default);
 
     /// <summary>The 3D view's model: the host's URDF of the robot (both arms) and each arm's joints and signals.</summary>

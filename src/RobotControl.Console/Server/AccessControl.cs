@@ -17,10 +17,11 @@ namespace RobotControl.WebConsole.Server;
 /// <item>requests that change something and WebSocket upgrades must come from the console's own origin when the
 /// browser names one (403 otherwise).</item>
 /// </list>
-/// Every response gets the security headers (<see cref="SecurityHeaders"/>), and an unexpected failure is a JSON 500
+/// Every response gets the security headers (<see cref="SecurityHeaders"/>), every API answer the server's run
+/// (<see cref="ConsoleServer.InstanceHeader"/>), and an unexpected failure is a JSON 500
 /// with one line, never an empty body or a stack trace.
 /// </summary>
-internal sealed class AccessControl(string token, HostAllowList hosts, IConsoleSession session, OperatorRole role)
+internal sealed class AccessControl(string token, HostAllowList hosts, IConsoleSession session, OperatorRole role, string instance)
 {
     private readonly byte[] _token = Encoding.UTF8.GetBytes(token);
 
@@ -33,6 +34,10 @@ internal sealed class AccessControl(string token, HostAllowList hosts, IConsoleS
         var request = context.Request;
         var api = request.Path.StartsWithSegments("/api", StringComparison.Ordinal);
         SecurityHeaders.Add(context.Response, request, api);
+        if (api)
+        {
+            context.Response.Headers[ConsoleServer.InstanceHeader] = instance; // the page tells a restarted server by it
+        }
         if (!hosts.Allows(request.Host))
         {
             await Refuse(context, StatusCodes.Status403Forbidden, $"host '{request.Host}' is not a name of this console (add it with --allowed-host)").ConfigureAwait(false);

@@ -13,13 +13,13 @@ namespace RobotControl.WebConsole.Server;
 /// </summary>
 internal static class ApiEndpoints
 {
-    public static void Map(IEndpointRouteBuilder app, IConsoleSession session, OperatorRole role)
+    public static void Map(IEndpointRouteBuilder app, IConsoleSession session, OperatorRole role, string instance)
     {
         var api = app.MapGroup("/api");
         api.MapGet("/status", (HttpContext http) =>
         {
             role.IsHeldBy(ClientOf(http)); // the holder's page polls: an open operator page keeps the role, a closed one loses it
-            return Json(new { session.Status, Operator = OperatorView(http, role) });
+            return Json(new { session.Status, Operator = OperatorView(http, role), Instance = instance });
         });
         api.MapGet("/controllers", () => Json(session.Controllers));
         api.MapGet("/signals", () => Json(session.Signals.Names.Select((n, i) => new { Name = n, Unit = session.Signals.Units[i] })));

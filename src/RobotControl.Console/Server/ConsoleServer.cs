@@ -26,6 +26,16 @@ public sealed class ConsoleServer : IAsyncDisposable
         Operator = role;
     }
 
+    /// <summary>The name of the header that carries <see cref="Instance"/> on every API answer.</summary>
+    public const string InstanceHeader = "X-Console-Instance";
+
+    /// <summary>
+    /// This run of the console server: random, set once at its start, on every API answer (<see cref="InstanceHeader"/>),
+    /// in <c>/api/status</c> and in the stream's answer to a subscription. A page that sees it change knows the server
+    /// was restarted and starts again (docs/console.md, "After a restart").
+    /// </summary>
+    public string Instance { get; } = Convert.ToHexStringLower(System.Security.Cryptography.RandomNumberGenerator.GetBytes(8));
+
     /// <summary>The session's access token (given or generated).</summary>
     public string Token { get; }
 
@@ -75,7 +85,7 @@ public sealed class ConsoleServer : IAsyncDisposable
         var app = builder.Build();
         var server = new ConsoleServer(app, token, new OperatorRole(options.Time));
         var host = PrintedHost(bind);
-        var access = new AccessControl(token, new HostAllowList(bind, options.AllowedHosts, host), session, server.Operator);
+        var access = new AccessControl(token, new HostAllowList(bind, options.AllowedHosts, host), session, server.Operator, server.Instance);
         if (options.First is not null)
         {
             app.Use(options.First);
@@ -85,8 +95,8 @@ public sealed class ConsoleServer : IAsyncDisposable
         app.Use(access.Invoke); // E-STOP is answered in here, before the rate limits and routing
         app.UseRouting();
         app.UseRateLimiter();
-        ApiEndpoints.Map(app, session, server.Operator);
-        StreamEndpoint.Map(app, session, options.MaxStreams, options.StreamQueueFrames);
+        ApiEndpoints.Map(app, session, server.Operator, server.Instance);
+        StreamEndpoint.Map(app, session, options.MaxStreams, options.StreamQueueFrames, server.Instance);
         if (session is Replay.ReplaySession replay)
         {
             Replay.ReplayEndpoints.Map(app, replay);

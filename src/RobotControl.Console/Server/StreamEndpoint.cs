@@ -10,7 +10,8 @@ namespace RobotControl.WebConsole.Server;
 /// <summary>
 /// <c>/api/stream</c>: a WebSocket per page. The page sends <c>{"subscribe": [signal, ...], "rateHz": 60}</c>; the
 /// server then samples the signal ring at that rate (at most 60 Hz) and sends the rows recorded since the last frame
-/// as <c>{"t": [...], "v": [[...], ...], "seq": n, "serverMs": ...}</c> (values in subscription order). The page may
+/// as <c>{"t": [...], "v": [[...], ...], "seq": n, "serverMs": ...}</c> (values in subscription order); its answer to a
+/// subscription names the server's run (<c>"instance"</c>, <see cref="ConsoleServer.Instance"/>), ahead of the frames. The page may
 /// send <c>{"ping": x}</c> and gets <c>{"pong": x, "serverMs": ...}</c> (latency measurement). Reading the ring takes no
 /// lock and never touches the loop. Each client's frames are serialized once, into a <see cref="FrameQueue"/> that
 /// drops the oldest when the client falls behind (a frame's <c>dropped</c> counts them); at most
@@ -21,7 +22,7 @@ internal static class StreamEndpoint
     private const double MaxRateHz = 60;
     private const int MaxRowsPerFrame = 200;
 
-    public static void Map(IEndpointRouteBuilder app, IConsoleSession session, int maxStreams, int queueFrames)
+    public static void Map(IEndpointRouteBuilder app, IConsoleSession session, int maxStreams, int queueFrames, string instance)
     {
         var streaming = 0;
         app.Map("/api/stream", async (HttpContext http) =>
@@ -44,7 +45,7 @@ internal static class StreamEndpoint
             try
             {
                 using var socket = await http.WebSockets.AcceptWebSocketAsync().ConfigureAwait(false);
-                using var client = new Client(socket, session.Signals, new FrameQueue(queueFrames));
+                using var client = new Client(socket, session.Signals, new FrameQueue(queueFrames), instance);
                 await client.Run(http.RequestAborted).ConfigureAwait(false);
             }
             finally
@@ -54,7 +55,7 @@ internal static class StreamEndpoint
         });
     }
 
-    private sealed class Client(WebSocket socket, SignalRing ring, FrameQueue queue) : IDisposable
+    private sealed class Client(WebSocket socket, SignalRing ring, FrameQueue queue, string instance) : IDisposable
     {
         private readonly SemaphoreSlim _send = new(1, 1);
         private volatile Subscription _subscription = new([], [], 1 / MaxRateHz, 0);
@@ -129,7 +130,7 @@ internal static class StreamEndpoint
                     Interlocked.Exchange(ref _cursor, Math.Max(0, ring.Written - 1)); // the latest row first: a still session (a paused replay) shows its state at once
                     var id = root.TryGetProperty("id", out var given) && given.TryGetInt64(out var n) ? n : 0;
                     _subscription = new Subscription(known, [.. known.Select(ring.IndexOf)], 1 / rate, id);
-                    await Send(new { Subscribed = known, Unknown = unknown, RateHz = rate, Id = id }, token).ConfigureAwait(false);
+                    await Send(new { Subscribed = known, Unknown = unknown, RateHz = rate, Id = id, Instance = instance }, token).ConfigureAwait(false);
                 }
             }
             catch (Exception ex) when (ex is JsonException or InvalidOperationException or KeyNotFoundException)

@@ -83,7 +83,7 @@ public sealed class ReplayPageTests
     }
 
     /// <summary>The plot's rows as its Export CSV gives them: the time column.</summary>
-    private static async Task<IReadOnlyList<double>> PlottedTimes(IPage page)
+    internal static async Task<IReadOnlyList<double>> PlottedTimes(IPage page)
     {
         var download = await page.RunAndWaitForDownloadAsync(() => page.GetByTestId("export-csv").ClickAsync());
         var lines = await File.ReadAllLinesAsync((await download.PathAsync())!);

@@ -38,6 +38,33 @@ export function reached(yes: boolean): void {
   for (const l of reachListeners) l(yes);
 }
 
+// The console server's run (docs/console.md, "After a restart"): every API answer names it (X-Console-Instance) and so
+// does the stream's answer to a subscription. When it changes the server was restarted: whatever a page holds from the
+// old run (samples, events, values) is the old run's, so every page that keeps any starts again from here.
+let instance: string | null = null;
+const restartListeners = new Set<() => void>();
+
+/** Calls <listener> each time the page sees a new run of the console server; returns the unsubscribe. */
+export function onRestart(listener: () => void): () => void {
+  restartListeners.add(listener);
+  return () => restartListeners.delete(listener);
+}
+
+/** The one place a server run is compared: the first one seen is kept; a different one restarts every page. */
+export function noticeInstance(seen: string | null): void {
+  if (!seen || seen === instance) return;
+  const restarted = instance !== null;
+  instance = seen;
+  if (restarted) for (const l of [...restartListeners]) l();
+}
+
+/** The page's first useful value (the start-up measurement, docs/performance.md): the time since navigation, once per visit. */
+export function markFirstValue(root: HTMLElement): void {
+  if (root.dataset.firstValue !== undefined) return;
+  root.dataset.firstValue = performance.now().toFixed(1);
+  performance.mark('first-value', { detail: root.dataset.page });
+}
+
 export async function api<T>(method: string, path: string, body?: unknown): Promise<T> {
   let response: Response;
   try {
@@ -51,6 +78,7 @@ export async function api<T>(method: string, path: string, body?: unknown): Prom
     throw new ApiError(0, `${method} /api${path}: the console server cannot be reached (${(e as Error).message})`);
   }
   reached(true);
+  noticeInstance(response.headers.get('X-Console-Instance'));
   const text = await response.text();
   const data = text.length > 0 ? JSON.parse(text) : {};
   if (!response.ok) {
@@ -100,6 +128,6 @@ export interface SessionStatus {
   torqueOn: boolean; faults: string[]; pluginFaults: number;
   bus: { cycles: number; frames: number; crcErrors: number; timeouts: number; retries: number };
 }
-export interface StatusReply { status: SessionStatus; operator: { held: boolean; you: boolean } }
+export interface StatusReply { status: SessionStatus; operator: { held: boolean; you: boolean }; instance: string }
 export interface ArmView { name: string; joints: string[]; positionSignals: string[]; commandSignals: string[] }
 export interface RobotModel { urdf: string; arms: ArmView[] }

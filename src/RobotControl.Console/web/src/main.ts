@@ -29,6 +29,7 @@ async function route(): Promise<void> {
   const root = document.getElementById('page')!;
   root.replaceChildren();
   root.dataset.page = name;
+  delete root.dataset.firstValue; // the start-up measurement: each visit marks its own first value
   document.querySelectorAll<HTMLAnchorElement>('nav a').forEach((a) => a.classList.toggle('active', a.dataset.page === name));
   const page = await load();
   if (current === visit) leave = page(root);

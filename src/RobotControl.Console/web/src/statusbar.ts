@@ -1,4 +1,4 @@
-import { act, api, onReach, show, type SessionStatus, type StatusReply } from './api';
+import { act, api, ApiError, onReach, onRestart, show, type SessionStatus, type StatusReply } from './api';
 import { button, el } from './dom';
 import { watchRole, type RoleState } from './role';
 import type { SurgeonView } from './surgeon/types';
@@ -83,6 +83,8 @@ export function statusBar(bar: HTMLElement, unreachable: HTMLElement): void {
   const roleState = watchRole(document.getElementById('page')!);
 
   let down = false;
+  let held: RoleState = 'watching'; // as last read: after a restart, the role this console had before it
+  onRestart(() => void retake(held === 'operator'));
   onReach((yes) => {
     if (yes === !down) return;
     down = !yes;
@@ -92,10 +94,32 @@ export function statusBar(bar: HTMLElement, unreachable: HTMLElement): void {
       level.textContent = levelWords.NO_LINK;
       level.dataset.level = 'NO_LINK';
       motors.textContent = 'motors unknown';
+      delete motors.dataset.on;
+      faults.textContent = 'faults unknown';
     } else {
       show('the console server answers again');
     }
   });
+
+  /**
+   * After a restart: the old run's messages go, the banner says once what starts again, and the operator role is taken
+   * again if this console held it (or the banner says who has it: never silently watching).
+   */
+  async function retake(wasOperator: boolean): Promise<void> {
+    const restarted = 'the console server restarted: plots and the event log start again';
+    if (!wasOperator) {
+      show(restarted);
+      return;
+    }
+    try {
+      await api('POST', '/operator');
+      show(`${restarted}; this console is the operator again`);
+    } catch (e) {
+      const taken = e instanceof ApiError && e.status === 409;
+      show(`${restarted}; ${taken ? 'another console took the operator role first: this one watches' : `the operator role was not taken again (${(e as Error).message})`}`, true);
+    }
+    await poll().catch(() => undefined);
+  }
 
   async function poll(): Promise<void> {
     const [reply, surgeon] = await Promise.all([api<StatusReply>('GET', '/status'), api<SurgeonView>('GET', '/surgeon')]);
@@ -112,6 +136,7 @@ export function statusBar(bar: HTMLElement, unreachable: HTMLElement): void {
     role.textContent = { operator: 'operator', held: 'watching: held by another console', watching: 'watching' }[state];
     role.dataset.role = state;
     claim.hidden = state === 'operator';
+    held = state;
     roleState(state);
   }
 

@@ -1,5 +1,5 @@
 // One WebSocket to /api/stream: subscribe to signals, receive the rows recorded since the last frame.
-import { reached, token } from './api';
+import { noticeInstance, reached, token } from './api';
 export interface Frame { t: number[]; v: number[][]; seq: number; id: number; dropped: number; serverMs: number }
 
 export class SignalStream {
@@ -44,6 +44,7 @@ export class SignalStream {
     };
     socket.onmessage = (e) => {
       const message = JSON.parse(e.data as string);
+      if (typeof message.instance === 'string') noticeInstance(message.instance); // ahead of the new run's first frame
       const names = Array.isArray(message.t) ? this.sent.get((message as Frame).id) : undefined;
       if (names) {
         this.onFrame(names, message as Frame);

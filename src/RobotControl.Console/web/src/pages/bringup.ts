@@ -1,4 +1,4 @@
-import { act, api, ApiError } from '../api';
+import { act, api, ApiError, onRestart } from '../api';
 import { button, el, fmt } from '../dom';
 
 interface MotorState { name: string; calibrated: boolean; verified: boolean; worstDeg: number | null; date: string | null }
@@ -46,6 +46,14 @@ export function bringupPage(root: HTMLElement): () => void {
   root.append(toolbar, prompt, result, unitLine, table, el('h3', {}, 'Progress'), log);
   let after = 0;
   let shape = '';
+  // A restarted server numbers its lines from 1 again: the old run's go and the log is read again from the start; an
+  // answer asked for before the restart is dropped (run counts the restarts), as on the run-status page.
+  let run = 0;
+  const leaveRestart = onRestart(() => {
+    run += 1;
+    after = 0;
+    log.replaceChildren();
+  });
 
   function showUnit(u: UnitState): void {
     unitLine.textContent = u.error ?? `unit ${u.unit} (${u.file})${u.date ? `, last written ${u.date}` : ', not commissioned yet'}`;
@@ -80,7 +88,9 @@ export function bringupPage(root: HTMLElement): () => void {
   }
 
   async function refresh(): Promise<void> {
+    const asked = run;
     const view = await api<BringUpView>('GET', `/bringup?after=${after}`);
+    if (asked !== run) return;
     showUnit(view.unit);
     showJob(view.job);
     for (const line of view.lines) {
@@ -97,7 +107,7 @@ export function bringupPage(root: HTMLElement): () => void {
   });
   tick();
   const timer = setInterval(tick, 300);
-  return () => clearInterval(timer);
+  return () => { clearInterval(timer); leaveRestart(); };
 }
 
 /** A motor's pot calibration in words. */

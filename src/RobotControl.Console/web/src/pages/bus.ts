@@ -1,4 +1,4 @@
-import { api, act, type ControllerView, type MotorView, type StatusReply } from '../api';
+import { api, act, markFirstValue, type ControllerView, type MotorView, type StatusReply } from '../api';
 import { el, button, fmt } from '../dom';
 import { homeAndRelease, jogControls, needsRole, parameterEditor, pedalButtons, setpointControls, showParameters } from '../motorcontrols';
 import { emergencyStop } from '../statusbar';
@@ -33,6 +33,7 @@ export function busPage(root: HTMLElement): () => void {
     for (const c of controllers) {
       update(c);
     }
+    if (controllers.some((c) => c.motors.length > 0)) markFirstValue(root);
   }
 
   const timer = setInterval(() => void refresh().catch(() => undefined), 300);

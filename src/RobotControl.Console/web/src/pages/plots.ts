@@ -1,6 +1,6 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
-import { api } from '../api';
+import { api, markFirstValue, onRestart } from '../api';
 import { el, button } from '../dom';
 import { displayFactor, displayUnit, type AngleUnit } from '../angles';
 import { SignalStream, type Frame } from '../stream';
@@ -65,6 +65,7 @@ export function plotsPage(root: HTMLElement): () => void {
   function draw(): void {
     count.textContent = `${times.length} samples`;
     plot?.setData([times, ...shown()] as uPlot.AlignedData);
+    if (times.length > 0) markFirstValue(root);
   }
 
   function rebuild(): void {
@@ -108,6 +109,13 @@ export function plotsPage(root: HTMLElement): () => void {
       .map((s) => { const o = el('option', { value: s.name }, `${s.name}${s.unit ? ` (${s.unit})` : ''}`); o.selected = selected.has(s.name); return o; }));
   }
 
+  // A restarted server: none of the old run's samples stay (its new rows may even lie ahead of them in time).
+  const leaveRestart = onRestart(() => {
+    times = [];
+    series = series.map(() => []);
+    draw();
+  });
+
   filter.addEventListener('input', fill);
   picker.addEventListener('change', rebuild);
   windowSelect.addEventListener('change', () => { trim(); draw(); });
@@ -118,5 +126,5 @@ export function plotsPage(root: HTMLElement): () => void {
     const first = Array.from(picker.options).find((o) => o.value.endsWith('.position'));
     if (first) { first.selected = true; rebuild(); }
   });
-  return () => { clearInterval(redraw); stream.close(); plot?.destroy(); };
+  return () => { clearInterval(redraw); leaveRestart(); stream.close(); plot?.destroy(); };
 }

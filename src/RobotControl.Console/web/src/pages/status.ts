@@ -1,4 +1,4 @@
-import { act, api, type StatusReply } from '../api';
+import { act, api, markFirstValue, onRestart, type StatusReply } from '../api';
 import { button, el, fmt } from '../dom';
 import { faultWords } from '../statusbar';
 import type { SurgeonView } from '../surgeon/types';
@@ -29,6 +29,14 @@ export function statusPage(root: HTMLElement): () => void {
     el('section', {}, el('h3', {}, 'Timing per component'), timings)),
   el('section', {}, el('h3', {}, 'Faults and events'), log));
   let last = 0;
+  // A restarted server numbers its events from 1 again: the old run's go, and the log is read again from the start.
+  // An answer asked for before the restart is dropped (run counts the restarts).
+  let run = 0;
+  const leaveRestart = onRestart(() => {
+    run += 1;
+    last = 0;
+    log.replaceChildren();
+  });
 
   async function refresh(): Promise<void> {
     const [{ status: s }, surgeon] = await Promise.all([api<StatusReply>('GET', '/status'), api<SurgeonView>('GET', '/surgeon')]);
@@ -42,17 +50,21 @@ export function statusPage(root: HTMLElement): () => void {
       ['bus', `${s.bus.cycles} cycles, ${s.bus.frames} frames, ${s.bus.crcErrors} CRC errors, ${s.bus.timeouts} timeouts, ${s.bus.retries} retries`],
     ];
     summary.replaceChildren(...rows.map(([k, v]) => el('tr', {}, el('th', {}, k), el('td', {}, v))));
+    markFirstValue(root);
     const t = await api<Timing[]>('GET', '/timings');
     timings.replaceChildren(el('tr', {}, ...['component', 'runs', 'median µs', 'p99 µs', 'max µs'].map((h) => el('th', {}, h))),
       ...t.map((x) => el('tr', {}, el('td', {}, x.component), el('td', {}, String(x.count)), el('td', {}, fmt(x.medianUs, 1)), el('td', {}, fmt(x.p99Us, 1)), el('td', {}, fmt(x.maxUs, 1)))));
+    const asked = run;
     const events = await api<EventEntry[]>('GET', `/events?after=${last}`);
+    if (asked !== run) return;
     for (const e of events) {
-      last = Math.max(last, e.sequence);
+      if (e.sequence <= last) continue; // already shown: an answer to a refresh that overlapped this one
+      last = e.sequence;
       log.prepend(el('tr', {}, el('td', {}, `${fmt(e.timeSeconds, 3)} s`), el('td', {}, e.source), el('td', {}, e.message)));
     }
   }
 
   const timer = setInterval(() => void refresh().then(refreshRecording).catch(() => undefined), 500);
   void refresh().then(refreshRecording).catch(() => undefined);
-  return () => clearInterval(timer);
+  return () => { clearInterval(timer); leaveRestart(); };
 }

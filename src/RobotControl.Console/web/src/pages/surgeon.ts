@@ -1,4 +1,4 @@
-import { api, type StatusReply } from '../api';
+import { api, markFirstValue, onRestart, type StatusReply } from '../api';
 import { button, el } from '../dom';
 import { emergencyStop, resetFaults, torqueOn } from '../statusbar';
 import { SignalStream, type Frame } from '../stream';
@@ -58,6 +58,12 @@ export function surgeonPage(root: HTMLElement): () => void {
     scene.view.setJoints((s) => values.get(s));
   }, 30);
 
+  // A restarted server: the hands' values and wall distances were the old run's; the new stream fills them again.
+  const leaveRestart = onRestart(() => {
+    values = new Map();
+    wallMm.clear();
+  });
+
   const resize = () => scene.view.resize(stage.clientWidth, stage.clientHeight);
   const observer = new ResizeObserver(resize);
   observer.observe(stage);
@@ -69,6 +75,7 @@ export function surgeonPage(root: HTMLElement): () => void {
       level.textContent = word;
       level.dataset.level = status.status.robotState;
       levelNote.textContent = note;
+      markFirstValue(root);
       reset.hidden = status.status.robotState !== 'E_STOP';
       home.hidden = status.status.robotState !== 'INIT';
       operator = status.operator.you;
@@ -107,6 +114,7 @@ export function surgeonPage(root: HTMLElement): () => void {
 
   return () => {
     window.clearInterval(timer);
+    leaveRestart();
     observer.disconnect();
     stream.close();
     video.stop();

@@ -1,3 +1,4 @@
+import { markFirstValue, onRestart } from '../api';
 import { button, el, fmt } from '../dom';
 import { RobotScene } from '../robot3d';
 import { SignalStream, type Frame } from '../stream';
@@ -29,6 +30,7 @@ export function view3dPage(root: HTMLElement): () => void {
       const cell = cells.get(signal);
       if (cell && column && column.length > 0) cell.textContent = fmt(column[column.length - 1], 6);
     });
+    if (names.length > 0) markFirstValue(root);
   }, 60);
 
   void view.load().then(() => {
@@ -40,6 +42,8 @@ export function view3dPage(root: HTMLElement): () => void {
     }));
     stream.subscribe(names);
   });
+  // A restarted server: the joint values shown were the old run's; the new stream fills them again.
+  const leaveRestart = onRestart(() => { for (const cell of cells.values()) cell.textContent = ''; });
   view.start();
-  return () => { observer.disconnect(); stream.close(); view.dispose(); };
+  return () => { leaveRestart(); observer.disconnect(); stream.close(); view.dispose(); };
 }

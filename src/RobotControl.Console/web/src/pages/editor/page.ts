@@ -1,7 +1,7 @@
 // Graph editor page: palette of the catalog's plug-in types, the node canvas (drawflow), the settings pane, problems
 // from the graph-file loader itself (POST /api/editor/check), load/save of the graphs folder, undo/redo, start/stop
 // of the edited graph and live values while it runs.
-import { api, act, ApiError, show } from '../../api';
+import { api, act, ApiError, markFirstValue, show } from '../../api';
 import { el, button } from '../../dom';
 import { SignalStream } from '../../stream';
 import { GraphCanvas, type Selection } from './canvas';
@@ -291,6 +291,7 @@ export function editorPage(root: HTMLElement): () => void {
       } else {
         fresh();
       }
+      markFirstValue(root); // the graph drawn (the start-up measurement)
     } catch (e) {
       show((e as Error).message, true);
     }
