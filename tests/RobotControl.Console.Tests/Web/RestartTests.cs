@@ -85,7 +85,7 @@ public sealed class RestartTests(ConsoleFixture console)
     }
 
     /// <summary>An event as the status page's log row shows it: time, source, message (white space as the page collapses it).</summary>
-    private static string Row(Session.EventEntry e) => Words(string.Create(CultureInfo.InvariantCulture, $"{e.TimeSeconds:F3} s {e.Source} {e.Message}"));
+    private static string Row(RobotControl.WebConsole.Session.EventEntry e) => Words(string.Create(CultureInfo.InvariantCulture, $"{e.TimeSeconds:F3} s {e.Source} {e.Message}"));
 
     private static string Words(string text) => Regex.Replace(text.Trim(), @"\s+", " ");
 
