@@ -16,12 +16,33 @@ public sealed class EditorCanvasTests(EditorFixture console, ITestOutputHelper o
     private const double ReadablePx = 11;
 
     [Fact]
-    public async Task At_the_zoom_that_fits_the_two_arm_graph_in_a_small_window_every_drawn_label_is_readable()
+    public async Task At_the_zoom_that_fits_the_two_arm_graph_and_zoomed_in_from_there_every_drawn_label_is_readable()
     {
         var page = await console.OpenEditor(1280, 800);
         await EditorFixture.LoadWithoutProblems(page, "teleop-lb.json");
         await page.GetByRole(AriaRole.Button, new() { Name = "Fit", Exact = true }).ClickAsync();
 
+        var fitted = await Labels(page, "fitted in 1280x800");
+        Assert.True(fitted.Zoom < 1, "the graph needs zooming out to fit");
+        Assert.Equal(15, fitted.Names.Length);
+        foreach (var node in fitted.Names)
+        {
+            Assert.Contains(fitted.Drawn, l => l.Node == node && l.Text == node); // each node's name is drawn, readable
+        }
+
+        // Zoomed in with the wheel step by step until the port labels show: readable at every step.
+        for (var step = 0; !(await Labels(page, $"zoomed in {step}")).Drawn.Any(l => l.Text == "force_x"); step++)
+        {
+            Assert.True(step < 12, "the port labels show before zoom 1.5");
+            await EditorFixture.ZoomInOneStep(page);
+        }
+
+        await EditorFixture.CloseEditor(page);
+    }
+
+    /// <summary>The text drawn on the canvas's nodes with its size on screen; fails when any is smaller than <see cref="ReadablePx"/>.</summary>
+    private async Task<(double Zoom, string[] Names, List<(string Node, string Text, double Px)> Drawn)> Labels(IPage page, string when)
+    {
         var seen = await page.EvaluateAsync<JsonElement>("""
             () => {
               const canvas = document.querySelector('[data-testid=graph-canvas]');
@@ -34,24 +55,18 @@ public sealed class EditorCanvasTests(EditorFixture console, ITestOutputHelper o
                   labels.push({ node: node.dataset.instance, text, px: parseFloat(getComputedStyle(e).fontSize) * scale });
                 }
               }
-              return { zoom: Number(canvas.dataset.zoom), compact: canvas.classList.contains('compact'), nodes: canvas.querySelectorAll('.drawflow-node').length,
+              const first = canvas.querySelector('.drawflow-node');
+              return { zoom: first.getBoundingClientRect().width / first.offsetWidth, compact: canvas.classList.contains('compact'),
                 names: [...canvas.querySelectorAll('.drawflow-node')].map((n) => n.dataset.instance), labels };
             }
             """);
-
-        var labels = seen.GetProperty("labels").EnumerateArray()
+        var drawn = seen.GetProperty("labels").EnumerateArray()
             .Select(l => (Node: l.GetProperty("node").GetString()!, Text: l.GetProperty("text").GetString()!, Px: l.GetProperty("px").GetDouble())).ToList();
-        output.WriteLine($"teleop-lb fitted in 1280x800: zoom {seen.GetProperty("zoom").GetDouble():0.###}, compact {seen.GetProperty("compact").GetBoolean()}, "
-            + $"{labels.Count} labels drawn, smallest {labels.Min(l => l.Px):0.#} px on screen");
-        Assert.Equal(15, seen.GetProperty("nodes").GetInt32());
-        Assert.True(seen.GetProperty("zoom").GetDouble() < 1, "the graph needs zooming out to fit");
-        var small = labels.Where(l => l.Px < ReadablePx).ToList();
-        Assert.True(small.Count == 0, string.Join("\n", small.Select(l => $"{l.Node}: '{l.Text}' {l.Px:0.#} px")));
-        foreach (var node in seen.GetProperty("names").EnumerateArray().Select(n => n.GetString()!))
-        {
-            Assert.Contains(labels, l => l.Node == node && l.Text == node); // each node's name is drawn, readable
-        }
-        await EditorFixture.CloseEditor(page);
+        var zoom = seen.GetProperty("zoom").GetDouble();
+        output.WriteLine($"teleop-lb {when}: zoom {zoom:0.###}, compact {seen.GetProperty("compact").GetBoolean()}, {drawn.Count} labels drawn, smallest {drawn.Min(l => l.Px):0.#} px on screen");
+        var small = drawn.Where(l => l.Px < ReadablePx).ToList();
+        Assert.True(small.Count == 0, $"{when}, zoom {zoom:0.###}:\n" + string.Join("\n", small.Select(l => $"{l.Node}: '{l.Text}' {l.Px:0.#} px")));
+        return (zoom, [.. seen.GetProperty("names").EnumerateArray().Select(n => n.GetString()!)], drawn);
     }
 
     [Fact]

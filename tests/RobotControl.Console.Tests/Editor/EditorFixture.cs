@@ -98,6 +98,25 @@ public sealed class EditorFixture : IAsyncLifetime
         await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync();
     }
 
+    /// <summary>Zooms the editor's canvas in by one step of the wheel (with Ctrl, as drawflow zooms), over its middle.</summary>
+    public static async Task ZoomInOneStep(IPage page)
+    {
+        var box = (await page.GetByTestId("graph-canvas").BoundingBoxAsync())!;
+        await page.Mouse.MoveAsync(box.X + box.Width / 2, box.Y + box.Height / 2);
+        await page.Keyboard.DownAsync("Control");
+        await page.Mouse.WheelAsync(0, -100);
+        await page.Keyboard.UpAsync("Control");
+    }
+
+    /// <summary>Zooms the editor's canvas in until its nodes show their labels (zoomed out, a node shows only its name).</summary>
+    public static async Task ZoomInUntilLabelsShow(IPage page)
+    {
+        for (var step = 0; step < 12 && await page.Locator("[data-testid=graph-canvas].compact").CountAsync() > 0; step++)
+        {
+            await ZoomInOneStep(page);
+        }
+    }
+
     /// <summary>Gives up the page's operator role (if it took it) and closes it.</summary>
     public static async Task CloseEditor(IPage page)
     {
