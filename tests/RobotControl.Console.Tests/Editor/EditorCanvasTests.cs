@@ -40,7 +40,7 @@ public sealed class EditorCanvasTests(EditorFixture console, ITestOutputHelper o
         await EditorFixture.CloseEditor(page);
     }
 
-    /// <summary>The text drawn on the canvas's nodes with its size on screen; fails when any is smaller than <see cref="ReadablePx"/>.</summary>
+    /// <summary>The text drawn on the canvas's nodes with its size on screen; fails when any is smaller than <see cref="ReadablePx"/> or nodes overlap.</summary>
     private async Task<(double Zoom, string[] Names, List<(string Node, string Text, double Px)> Drawn)> Labels(IPage page, string when)
     {
         var seen = await page.EvaluateAsync<JsonElement>("""
@@ -56,7 +56,10 @@ public sealed class EditorCanvasTests(EditorFixture console, ITestOutputHelper o
                 }
               }
               const first = canvas.querySelector('.drawflow-node');
-              return { zoom: first.getBoundingClientRect().width / first.offsetWidth, compact: canvas.classList.contains('compact'),
+              const boxes = [...canvas.querySelectorAll('.drawflow-node')].map((n) => ({ name: n.dataset.instance, r: n.getBoundingClientRect() }));
+              const overlaps = boxes.flatMap((a, i) => boxes.slice(i + 1).filter((b) => a.r.left < b.r.right && b.r.left < a.r.right && a.r.top < b.r.bottom && b.r.top < a.r.bottom)
+                .map((b) => `${a.name} and ${b.name}`));
+              return { zoom: first.getBoundingClientRect().width / first.offsetWidth, compact: canvas.classList.contains('compact'), overlaps,
                 names: [...canvas.querySelectorAll('.drawflow-node')].map((n) => n.dataset.instance), labels };
             }
             """);
@@ -66,6 +69,7 @@ public sealed class EditorCanvasTests(EditorFixture console, ITestOutputHelper o
         output.WriteLine($"teleop-lb {when}: zoom {zoom:0.###}, compact {seen.GetProperty("compact").GetBoolean()}, {drawn.Count} labels drawn, smallest {drawn.Min(l => l.Px):0.#} px on screen");
         var small = drawn.Where(l => l.Px < ReadablePx).ToList();
         Assert.True(small.Count == 0, $"{when}, zoom {zoom:0.###}:\n" + string.Join("\n", small.Select(l => $"{l.Node}: '{l.Text}' {l.Px:0.#} px")));
+        Assert.True(seen.GetProperty("overlaps").GetArrayLength() == 0, $"{when}: nodes overlap: {seen.GetProperty("overlaps")}"); // labels grown or hidden, the nodes keep apart
         return (zoom, [.. seen.GetProperty("names").EnumerateArray().Select(n => n.GetString()!)], drawn);
     }
 

@@ -7,16 +7,13 @@ import { type GraphModel, type History, type NodePorts, type Problem, depths, in
 export type Selection = { node: string } | { wire: number } | null;
 
 /**
- * The smallest text the canvas draws, on screen (px). Zoomed out, a node's labels grow against the zoom (never below
- * labelPx on screen) while they fit their 20 px rows; further out the canvas turns compact: each node shows only its
- * name, at titlePx on screen whatever the zoom, and hides its port labels, live values and problems (a port's tooltip
- * and the problems panel still tell them); zooming in shows them again. Neither Fit nor the wheel zooms out further
- * than each node's name fits its node at titlePx.
+ * The smallest text the canvas draws, on screen (px). Zoomed out so far that a node's labels would be smaller, the
+ * canvas turns compact: each node shows only its name, at titlePx on screen whatever the zoom, and hides its port
+ * labels, live values and problems (a port's tooltip and the problems panel still tell them); zooming in shows them
+ * again. Neither Fit nor the wheel zooms out further than each node's name fits its node at titlePx.
  */
 export const readablePx = 11;
-const labelPx = 11.5; // a label's least size on screen, a margin above readablePx
 const titlePx = 12;
-const rowTextShare = 0.8; // the largest label a port row holds, as a share of the row's height
 const zoomMin = 0.3; // drawflow's floor when names would fit at any zoom
 
 const esc = (s: string) => s.replace(/[&<>"']/g, (c) => `&#${c.charCodeAt(0)};`);
@@ -27,7 +24,7 @@ export class GraphCanvas {
   private readonly names = new Map<number, string>();
   private rendering = false;
   private picked: Selection = null;
-  private fullZoom = 1; // from this zoom up, every label of a node, grown to labelPx on screen, fits its row
+  private fullZoom = 1; // from this zoom up, every label of a node is at least readablePx on screen
   private floorZoom = zoomMin; // the smallest zoom at which every node's name fits its node at titlePx
 
   constructor(
@@ -50,7 +47,6 @@ export class GraphCanvas {
     this.df.on('zoom', () => {
       this.df.zoom = Math.max(this.df.zoom, this.floorZoom);
       this.showZoom();
-      queueMicrotask(() => this.followLabels()); // once drawflow has applied the zoom
     });
     this.df.on('connectionCreated', (e) => this.connected(e));
     this.df.on('nodeMoved', (id) => this.moved(id));
@@ -72,7 +68,7 @@ export class GraphCanvas {
       const g = this.graph;
       if (g.robot !== null) this.addNode(robotInstance, 'robot', g.robotX, g.robotY);
       for (const i of g.instances) this.addNode(i.name, i.type, i.x, i.y);
-      this.measureReadability(); // sizes the labels for the zoom before the wires are drawn to the port dots
+      this.measureReadability();
       for (const w of g.wires) {
         const at = this.endsOf(w.from, w.to);
         if (at) this.df.addConnection(at.out, at.in, at.outClass, at.inClass);
@@ -255,7 +251,6 @@ export class GraphCanvas {
     this.df.precanvas.style.transform = `translate(${this.df.canvas_x}px, ${this.df.canvas_y}px) scale(${this.df.zoom})`;
     (this.df as unknown as { zoom_last_value: number }).zoom_last_value = this.df.zoom;
     this.showZoom();
-    this.followLabels();
   }
 
   /** Back to zoom 1 with the canvas origin at the top left (a new graph). */
@@ -266,15 +261,6 @@ export class GraphCanvas {
     this.df.precanvas.style.transform = 'translate(0px, 0px) scale(1)';
     (this.df as unknown as { zoom_last_value: number }).zoom_last_value = 1;
     this.showZoom();
-    this.followLabels();
-  }
-
-  /** Wires follow the port dots after labels grew or shrank with the zoom (a node's width follows its labels). */
-  private followLabels(): void {
-    for (const id of this.ids.values()) this.df.updateConnectionNodes(`node-${id}`);
-    this.container.querySelectorAll<SVGSVGElement>('svg.connection').forEach((svg) => {
-      svg.querySelector('.gn-hit')?.setAttribute('d', svg.querySelector('.main-path')?.getAttribute('d') ?? '');
-    });
   }
 
   /**
@@ -293,13 +279,15 @@ export class GraphCanvas {
   }
 
   /**
-   * From the drawn nodes: the zoom below which a label grown to labelPx on screen would not fit its port row (below
-   * it the canvas is compact), and the zoom below which a node's name would not fit its node at titlePx (broken
-   * after its underscores).
+   * From the drawn nodes: the zoom from which their smallest label is readable (below it the canvas is compact), and
+   * the zoom below which a node's name would not fit its node at titlePx (broken after its underscores).
    */
   private measureReadability(): void {
-    const row = this.container.querySelector<HTMLElement>('.gn-port')?.offsetHeight || 20;
-    this.fullZoom = labelPx / (rowTextShare * row);
+    const sizes = ['.gn-name', '.gn-type', '.gn-pname', '.gn-unit', '.gn-live', '.gn-problems'].flatMap((c) => {
+      const e = this.container.querySelector(c);
+      return e ? [parseFloat(getComputedStyle(e).fontSize)] : [];
+    });
+    this.fullZoom = sizes.length === 0 ? 1 : readablePx / Math.min(...sizes);
     const title = this.container.querySelector('.gn-title');
     const measure = document.createElement('canvas').getContext('2d');
     let floor = zoomMin;
@@ -317,10 +305,9 @@ export class GraphCanvas {
     this.showZoom();
   }
 
-  /** Labels at least labelPx on screen, compact below the zoom where they no longer fit (names at titlePx). */
+  /** Compact below the zoom that keeps labels readable; the name's size follows the zoom (titlePx on screen). */
   private showZoom(): void {
     this.container.classList.toggle('compact', this.df.zoom < this.fullZoom);
-    this.container.style.setProperty('--gn-label-size', `${labelPx / this.df.zoom}px`);
     this.container.style.setProperty('--gn-title-size', `${titlePx / this.df.zoom}px`);
   }
 
