@@ -108,9 +108,13 @@ public sealed class EditorFixture : IAsyncLifetime
         await page.Keyboard.UpAsync("Control");
     }
 
-    /// <summary>Zooms the editor's canvas in until its nodes show their labels (zoomed out, a node shows only its name).</summary>
+    /// <summary>
+    /// Once a graph is loaded (and fitted: its check's problem count can come first), zooms the editor's canvas in
+    /// until its nodes show their labels (zoomed out, a node shows only its name).
+    /// </summary>
     public static async Task ZoomInUntilLabelsShow(IPage page)
     {
+        await page.Locator("#message").Filter(new() { HasTextString = "loaded " }).WaitForAsync();
         for (var step = 0; step < 12 && await page.Locator("[data-testid=graph-canvas].compact").CountAsync() > 0; step++)
         {
             await ZoomInOneStep(page);
