@@ -119,6 +119,29 @@ public sealed class PluginGraph
     public GraphProgram Compile()
     {
         var problems = new List<JsonProblem>();
+        var order = Order(problems);
+        if (problems.Count > 0)
+        {
+            throw new GraphException(problems);
+        }
+
+        return new GraphProgram(order, _wires, _byName);
+    }
+
+    /// <summary>
+    /// What <see cref="Compile"/> would reject (a cycle without a delayed wire, naming its instances; an observer whose
+    /// outputs feed others), without compiling: a graph file's check lists these beside the problems it found reading
+    /// the file, on the instances and wires that could be created.
+    /// </summary>
+    public IReadOnlyList<JsonProblem> Check()
+    {
+        var problems = new List<JsonProblem>();
+        Order(problems);
+        return problems;
+    }
+
+    private List<Plugin> Order(List<JsonProblem> problems)
+    {
         var index = new Dictionary<Plugin, int>();
         for (var i = 0; i < _instances.Count; i++)
         {
@@ -135,13 +158,7 @@ public sealed class PluginGraph
             }
         }
 
-        var order = TopologicalOrder(index, problems);
-        if (problems.Count > 0)
-        {
-            throw new GraphException(problems);
-        }
-
-        return new GraphProgram(order, _wires, _byName);
+        return TopologicalOrder(index, problems);
     }
 
     private static string InstanceOf(string signal) => SignalName.TrySplit(signal, out var instance, out _) ? instance : "";
@@ -214,7 +231,8 @@ public sealed class PluginGraph
 
         var order = new List<Plugin>(n);
         var done = new bool[n];
-        while (order.Count < n)
+        var taken = 0;
+        while (taken < n)
         {
             var next = -1;
             for (var i = 0; i < n; i++)
@@ -231,22 +249,34 @@ public sealed class PluginGraph
 
             if (next < 0)
             {
-                ReportCycle(predecessors, done, problems);
-                break;
+                // Every cycle is named: the one found is taken out as if it ran, and the search goes on.
+                foreach (var member in ReportCycle(predecessors, done, problems))
+                {
+                    Take(member);
+                }
+
+                continue;
             }
 
-            done[next] = true;
+            Take(next);
             order.Add(_instances[next]);
-            foreach (var target in successors[next])
+        }
+
+        return order;
+
+        void Take(int node)
+        {
+            done[node] = true;
+            taken++;
+            foreach (var target in successors[node])
             {
                 indegree[target]--;
             }
         }
-
-        return order;
     }
 
-    private void ReportCycle(List<(int Source, Wire Wire)>[] predecessors, bool[] done, List<JsonProblem> problems)
+    /// <summary>Names one cycle among the instances not yet done; returns its instances.</summary>
+    private List<int> ReportCycle(List<(int Source, Wire Wire)>[] predecessors, bool[] done, List<JsonProblem> problems)
     {
         // Every instance left over has an undelayed source that is also left over, so walking backwards from any of
         // them never ends: the first repeated instance closes a cycle.
@@ -268,5 +298,6 @@ public sealed class PluginGraph
         problems.Add(new JsonProblem(
             wires[0].Origin,
             $"cycle without a delayed wire: {string.Join(" -> ", names)} (wires: {string.Join(", ", wires.Select(w => $"{w.From} -> {w.To}"))}); mark one wire of the cycle \"delayed\": true to feed it back one tick later"));
+        return [.. cycle.Select(c => c.Node)];
     }
 }

@@ -238,25 +238,20 @@ public static class GraphFile
         var wires = ReadWires(root, graph, problems, failed);
         var declaredNames = new HashSet<string>(instances.Select(i => i.Name).Concat(failed), StringComparer.Ordinal);
         var layout = GraphLayout.Read(root, declaredNames, robot is not null || robotPath is not null, problems);
+
+        // A cycle (or an observer feeding others) is listed with the problems above, among the instances and wires
+        // that could be created, rather than only once those are fixed.
+        foreach (var p in graph.Check())
+        {
+            problems.Add(p.Path, p.Message);
+        }
+
         if (problems.Problems.Count > 0)
         {
             return null;
         }
 
-        GraphProgram program;
-        try
-        {
-            program = graph.Compile();
-        }
-        catch (GraphException ex)
-        {
-            foreach (var p in ex.Problems)
-            {
-                problems.Add(p.Path, p.Message);
-            }
-
-            return null;
-        }
+        var program = graph.Compile();
 
         var document = new GraphDocument(robotPath, transport, rate, instances, wires) { Layout = layout };
         return new LoadedGraph(fullPath, document, robot, robotNode, graph, program);

@@ -12,7 +12,7 @@ public sealed class EditorDraftTests(EditorFixture console)
         var page = await console.OpenEditor();
         var asked = new List<string>();
         page.Dialog += (_, dialog) => { asked.Add(dialog.Message); _ = dialog.AcceptAsync(); };
-        await Load(page, EditorFixture.HandWritten);
+        await EditorFixture.LoadWithoutProblems(page, EditorFixture.HandWritten);
         Assert.True(await page.GetByTestId("unsaved").IsHiddenAsync());
 
         await page.Locator(".drawflow-node[data-instance=scaling_right] .gn-head").ClickAsync();
@@ -57,7 +57,7 @@ public sealed class EditorDraftTests(EditorFixture console)
             asked.Add(dialog.Message);
             _ = answer ? dialog.AcceptAsync() : dialog.DismissAsync();
         };
-        await Load(page, EditorFixture.HandWritten);
+        await EditorFixture.LoadWithoutProblems(page, EditorFixture.HandWritten);
         var scaling = page.Locator(".drawflow-node[data-instance=scaling_right]");
 
         await scaling.Locator(".gn-head").ClickAsync();
@@ -88,14 +88,6 @@ public sealed class EditorDraftTests(EditorFixture console)
         await page.GetByTestId("unsaved").WaitForAsync();
         await page.EvaluateAsync("() => localStorage.removeItem('rc-editor-draft')");
         await EditorFixture.CloseEditor(page);
-    }
-
-    private static async Task Load(IPage page, string graph)
-    {
-        await page.GetByTestId("graph-list").SelectOptionAsync(graph);
-        await page.GetByTestId("load").ClickAsync();
-        await page.Locator("#message").Filter(new() { HasTextString = $"loaded {graph}" }).WaitForAsync();
-        await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync();
     }
 
     private static async Task SetRatio(IPage page, string value)

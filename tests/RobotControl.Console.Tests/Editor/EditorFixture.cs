@@ -1,3 +1,5 @@
+using System.Text.Json.Nodes;
+using System.Text.RegularExpressions;
 using Microsoft.Playwright;
 using RobotControl.WebConsole.Adapter;
 using RobotControl.WebConsole.Editor;
@@ -87,11 +89,75 @@ public sealed class EditorFixture : IAsyncLifetime
         return page;
     }
 
+    /// <summary>Loads graph file <paramref name="graph"/> of the folder in the editor, and waits until it is checked without problems.</summary>
+    public static async Task LoadWithoutProblems(IPage page, string graph)
+    {
+        await page.GetByTestId("graph-list").SelectOptionAsync(graph);
+        await page.GetByTestId("load").ClickAsync();
+        await page.Locator("#message").Filter(new() { HasTextString = $"loaded {graph}" }).WaitForAsync();
+        await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync();
+    }
+
+    /// <summary>Zooms the editor's canvas in by one step of the wheel (with Ctrl, as drawflow zooms), over its middle.</summary>
+    public static async Task ZoomInOneStep(IPage page)
+    {
+        var box = (await page.GetByTestId("graph-canvas").BoundingBoxAsync())!;
+        await page.Mouse.MoveAsync(box.X + box.Width / 2, box.Y + box.Height / 2);
+        await page.Keyboard.DownAsync("Control");
+        await page.Mouse.WheelAsync(0, -100);
+        await page.Keyboard.UpAsync("Control");
+    }
+
+    /// <summary>
+    /// Once a graph is loaded (and fitted: its check's problem count can come first), zooms the editor's canvas in
+    /// until its nodes show their labels (zoomed out, a node shows only its name).
+    /// </summary>
+    public static async Task ZoomInUntilLabelsShow(IPage page)
+    {
+        await page.Locator("#message").Filter(new() { HasTextString = "loaded " }).WaitForAsync();
+        for (var step = 0; step < 12 && await page.Locator("[data-testid=graph-canvas].compact").CountAsync() > 0; step++)
+        {
+            await ZoomInOneStep(page);
+        }
+    }
+
     /// <summary>Gives up the page's operator role (if it took it) and closes it.</summary>
     public static async Task CloseEditor(IPage page)
     {
         await page.EvaluateAsync("() => fetch('/api/operator', { method: 'DELETE', headers: { 'X-Console-Client': sessionStorage.getItem('rc-console-client'), Authorization: 'Bearer ' + sessionStorage.getItem('rc-console-token') } })");
         await page.CloseAsync();
+    }
+
+    /// <summary>
+    /// The one-arm graph with three problems at once: an out-of-range ratio (scaling_right), an instance of a type
+    /// nobody knows (mystery) and the feedback wire damping_right.fx -> touch_right.force_x no longer delayed (a cycle
+    /// through the arm: touch_right -> homing_right -> clutch_right -> ik_right -> walls_right -> damping_right).
+    /// </summary>
+    public string GraphWithThreeProblems()
+    {
+        var graph = JsonNode.Parse(File.ReadAllText(Path.Combine(Graphs, HandWritten)))!.AsObject();
+        graph["instances"]![2]!["settings"]!["ratio"] = 500;
+        graph["instances"]!.AsArray().Add(new JsonObject { ["name"] = "mystery", ["type"] = "no_such_type" });
+        foreach (var wire in graph["wires"]!.AsArray())
+        {
+            if ((string?)wire!["from"] == "damping_right.fx")
+            {
+                wire.AsObject().Remove("delayed");
+            }
+        }
+
+        return graph.ToJsonString();
+    }
+
+    /// <summary>The instances of <see cref="GraphWithThreeProblems"/>'s cycle.</summary>
+    public static readonly string[] CycleOfThree = ["clutch_right", "damping_right", "homing_right", "ik_right", "touch_right", "walls_right"];
+
+    /// <summary>The instances a cycle problem names (<c>cycle without a delayed wire: a -> b -> a (wires: ...</c>), in order, or none.</summary>
+    public static string[] CycleIn(string problem)
+    {
+        var chain = Regex.Match(problem, @"cycle without a delayed wire: (\S+(?: -> \S+)+) \(wires: ");
+        var names = chain.Success ? chain.Groups[1].Value.Split(" -> ") : [];
+        return names.Length > 2 && names[0] == names[^1] ? names[..^1] : [];
     }
 
     /// <summary>An HTTP client that names itself <paramref name="client"/>.</summary>

@@ -156,6 +156,7 @@ public sealed class EditorPageTests(EditorFixture console)
         await page.GetByTestId("graph-list").SelectOptionAsync(EditorFixture.HandWritten);
         await page.GetByTestId("load").ClickAsync();
         await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync();
+        await EditorFixture.ZoomInUntilLabelsShow(page); // zoomed out, a node shows its name alone
 
         await page.Locator(".drawflow-node[data-instance=scaling_right] .gn-head").ClickAsync();
         await page.Locator("[data-setting=ratio]").FillAsync("500");
@@ -190,6 +191,7 @@ public sealed class EditorPageTests(EditorFixture console)
         await page.GetByTestId("graph-list").SelectOptionAsync(EditorFixture.HandWritten);
         await page.GetByTestId("load").ClickAsync();
         await page.Locator("[data-testid=problems][data-count='0']").WaitForAsync();
+        await EditorFixture.ZoomInUntilLabelsShow(page); // zoomed out, a node shows its name alone
         await page.GetByTestId("start").ClickAsync();
         try
         {

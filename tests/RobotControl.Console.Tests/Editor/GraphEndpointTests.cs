@@ -116,6 +116,23 @@ public sealed class GraphEndpointTests(EditorFixture console)
     }
 
     [Fact]
+    public async Task A_check_lists_a_cycle_together_with_the_other_problems_naming_the_cycles_instances()
+    {
+        using var http = console.Client("all-problems");
+
+        var reply = await http.PostAsJsonAsync("api/editor/check", new { name = "three.json", graph = JsonNode.Parse(console.GraphWithThreeProblems()) });
+
+        reply.EnsureSuccessStatusCode();
+        var problems = (await reply.Content.ReadFromJsonAsync<JsonElement>()).GetProperty("problems").EnumerateArray()
+            .Select(p => $"{p.GetProperty("path").GetString()}: {p.GetProperty("message").GetString()}").ToList();
+        Assert.True(problems.Count == 3, string.Join("\n", problems));
+        Assert.Contains(problems, p => p.StartsWith("$.instances[2].settings.ratio: 500 is outside", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("$.instances[7].type: unknown plug-in type 'no_such_type'", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("$.wires[", StringComparison.Ordinal)
+            && EditorFixture.CycleIn(p).Order(StringComparer.Ordinal).SequenceEqual(EditorFixture.CycleOfThree));
+    }
+
+    [Fact]
     public async Task Start_runs_the_graph_behind_the_same_session_and_stop_turns_it_off()
     {
         var run = await console.Runner.StartAsync(Path.Combine(console.Graphs, EditorFixture.HandWritten));

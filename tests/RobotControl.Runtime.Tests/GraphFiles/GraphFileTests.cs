@@ -164,6 +164,48 @@ public sealed class GraphFileTests
     }
 
     [Fact]
+    public void A_cycle_is_listed_with_the_other_problems_of_the_file_naming_its_instances()
+    {
+        const string json = """
+            {
+              "schema": "robotcontrol/graph/1",
+              "instances": [
+                { "name": "a", "type": "example" },
+                { "name": "b", "type": "example" },
+                { "name": "c", "type": "no_such_type" },
+                { "name": "d", "type": "example", "settings": { "ratio": 5 } }
+              ],
+              "wires": [ { "from": "a.out", "to": "b.in" }, { "from": "b.out", "to": "a.in" } ]
+            }
+            """;
+
+        var problems = LoadFails(json).Problems.Select(p => p.ToString()).ToList();
+
+        Assert.Equal(3, problems.Count);
+        Assert.Contains(problems, p => p.StartsWith("$.instances[2].type: unknown plug-in type 'no_such_type'", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("$.instances[3].settings.ratio: 5 is outside", StringComparison.Ordinal));
+        Assert.Contains(problems, p => p.StartsWith("$.wires[", StringComparison.Ordinal) && (p.Contains("cycle without a delayed wire: a -> b -> a", StringComparison.Ordinal) || p.Contains("cycle without a delayed wire: b -> a -> b", StringComparison.Ordinal)));
+    }
+
+    [Fact]
+    public void Two_separate_cycles_are_both_named()
+    {
+        const string json = """
+            {
+              "schema": "robotcontrol/graph/1",
+              "instances": [ { "name": "a", "type": "example" }, { "name": "b", "type": "example" }, { "name": "c", "type": "example" }, { "name": "d", "type": "example" } ],
+              "wires": [ { "from": "a.out", "to": "b.in" }, { "from": "b.out", "to": "a.in" }, { "from": "c.out", "to": "d.in" }, { "from": "d.out", "to": "c.in" } ]
+            }
+            """;
+
+        var problems = LoadFails(json).Problems;
+
+        Assert.Equal(2, problems.Count);
+        Assert.Single(problems, p => p.Message.Contains("cycle without a delayed wire: a -> b -> a", StringComparison.Ordinal) || p.Message.Contains("cycle without a delayed wire: b -> a -> b", StringComparison.Ordinal));
+        Assert.Single(problems, p => p.Message.Contains("cycle without a delayed wire: c -> d -> c", StringComparison.Ordinal) || p.Message.Contains("cycle without a delayed wire: d -> c -> d", StringComparison.Ordinal));
+    }
+
+    [Fact]
     public void Cross_setting_rules_and_unknown_top_level_fields_are_reported()
     {
         const string json = """

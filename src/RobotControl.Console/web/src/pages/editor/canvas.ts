@@ -2,9 +2,19 @@
 // stays the one source of truth and every change re-renders from it.
 import Drawflow, { type ConnectionEvent } from 'drawflow';
 import 'drawflow/dist/drawflow.min.css';
-import { type GraphModel, type History, type NodePorts, type Problem, depths, instanceOf, portOf, robotInstance } from './model';
+import { type GraphModel, type History, type NodePorts, type Problem, depths, instanceOf, portOf, problemTarget, robotInstance } from './model';
 
 export type Selection = { node: string } | { wire: number } | null;
+
+/**
+ * The smallest text the canvas draws, on screen (px). Zoomed out so far that a node's labels would be smaller, the
+ * canvas turns compact: each node shows only its name, at titlePx on screen whatever the zoom, and hides its port
+ * labels, live values and problems (a port's tooltip and the problems panel still tell them); zooming in shows them
+ * again. Neither Fit nor the wheel zooms out further than each node's name fits its node at titlePx.
+ */
+export const readablePx = 11;
+const titlePx = 12;
+const zoomMin = 0.3; // drawflow's floor when names would fit at any zoom
 
 const esc = (s: string) => s.replace(/[&<>"']/g, (c) => `&#${c.charCodeAt(0)};`);
 
@@ -14,6 +24,8 @@ export class GraphCanvas {
   private readonly names = new Map<number, string>();
   private rendering = false;
   private picked: Selection = null;
+  private fullZoom = 1; // from this zoom up, every label of a node is at least readablePx on screen
+  private floorZoom = zoomMin; // the smallest zoom at which every node's name fits its node at titlePx
 
   constructor(
     private readonly container: HTMLElement,
@@ -28,9 +40,14 @@ export class GraphCanvas {
     df.key = () => undefined;
     df.contextmenu = (e) => e.preventDefault();
     this.df.reroute = false;
-    this.df.zoom_min = 0.3;
+    this.df.zoom_min = zoomMin;
     this.df.start();
     this.df.precanvas.style.transformOrigin = '0 0';
+    // drawflow announces a wheel or button zoom before it applies it: kept at or above the readable floor.
+    this.df.on('zoom', () => {
+      this.df.zoom = Math.max(this.df.zoom, this.floorZoom);
+      this.showZoom();
+    });
     this.df.on('connectionCreated', (e) => this.connected(e));
     this.df.on('nodeMoved', (id) => this.moved(id));
     this.df.on('nodeSelected', (id) => this.select({ node: this.names.get(Number(id)) ?? '' }));
@@ -51,11 +68,13 @@ export class GraphCanvas {
       const g = this.graph;
       if (g.robot !== null) this.addNode(robotInstance, 'robot', g.robotX, g.robotY);
       for (const i of g.instances) this.addNode(i.name, i.type, i.x, i.y);
+      this.measureReadability();
       for (const w of g.wires) {
         const at = this.endsOf(w.from, w.to);
         if (at) this.df.addConnection(at.out, at.in, at.outClass, at.inClass);
       }
       for (const id of this.ids.values()) this.df.updateConnectionNodes(`node-${id}`);
+      this.addHitPaths();
       this.markPicked();
     } finally {
       this.rendering = false;
@@ -101,21 +120,18 @@ export class GraphCanvas {
     const rest: Problem[] = [];
     for (const p of problems) {
       const text = `${p.path}: ${p.message}`;
-      const instance = /^\$\.instances\[(\d+)\]/.exec(p.path);
-      const wire = /^\$\.wires\[(\d+)\]/.exec(p.path);
-      const layout = /^\$\.layout\.([^.]+)/.exec(p.path);
-      const node = instance ? g.instances[Number(instance[1])]?.name : layout ? layout[1] : undefined;
-      const nodeEl = node === undefined ? null : this.nodeElement(node);
+      const target = problemTarget(g, p);
+      const nodeEl = target && 'node' in target ? this.nodeElement(target.node) : null;
       if (nodeEl) {
         nodeEl.classList.add('gn-bad');
         nodeEl.querySelector('.gn-problems')!.append(Object.assign(document.createElement('div'), { textContent: text }));
         continue;
       }
-      const svg = wire ? this.wireElement(Number(wire[1])) : null;
-      if (wire && svg) {
+      const svg = target && 'wire' in target ? this.wireElement(target.wire) : null;
+      if (target && 'wire' in target && svg) {
         svg.classList.add('problem');
         svg.dataset.problem = [svg.dataset.problem, text].filter(Boolean).join('\n');
-        const w = g.wires[Number(wire[1])];
+        const w = g.wires[target.wire];
         const port = this.container.querySelector(`.gn-port[data-signal="${CSS.escape(w.to)}"]`);
         port?.classList.add('gn-bad');
         port?.setAttribute('title', text);
@@ -217,7 +233,7 @@ export class GraphCanvas {
     return boxes.some((b) => b.moved);
   }
 
-  /** Scales and moves the view so every node shows. */
+  /** Scales and moves the view so every node shows, or as many as the readable floor lets (then drag to scroll). */
   fit(): void {
     const nodes = [...this.container.querySelectorAll<HTMLElement>('.drawflow-node')];
     if (nodes.length === 0) return;
@@ -229,11 +245,12 @@ export class GraphCanvas {
     this.container.classList.remove('sizing');
     const margin = 24;
     const zoom = Math.min(1, (this.container.clientWidth - 2 * margin) / (maxX - minX), (this.container.clientHeight - 2 * margin) / (maxY - minY));
-    this.df.zoom = Math.max(0.3, zoom);
+    this.df.zoom = Math.max(this.floorZoom, zoom);
     this.df.canvas_x = margin - minX * this.df.zoom;
     this.df.canvas_y = margin - minY * this.df.zoom;
     this.df.precanvas.style.transform = `translate(${this.df.canvas_x}px, ${this.df.canvas_y}px) scale(${this.df.zoom})`;
     (this.df as unknown as { zoom_last_value: number }).zoom_last_value = this.df.zoom;
+    this.showZoom();
   }
 
   /** Back to zoom 1 with the canvas origin at the top left (a new graph). */
@@ -243,6 +260,55 @@ export class GraphCanvas {
     this.df.canvas_y = 0;
     this.df.precanvas.style.transform = 'translate(0px, 0px) scale(1)';
     (this.df as unknown as { zoom_last_value: number }).zoom_last_value = 1;
+    this.showZoom();
+  }
+
+  /**
+   * Each wire gets a wide invisible twin path, drawn above the nodes' bodies (below their titles and port dots): a
+   * click near a wire picks it even where it passes over a node. drawflow picks a wire by its path's first class.
+   */
+  private addHitPaths(): void {
+    this.container.querySelectorAll<SVGSVGElement>('svg.connection').forEach((svg) => {
+      const main = svg.querySelector('.main-path');
+      if (!main) return;
+      const hit = document.createElementNS('http://www.w3.org/2000/svg', 'path');
+      hit.classList.add('main-path', 'gn-hit');
+      hit.setAttribute('d', main.getAttribute('d') ?? '');
+      svg.append(hit);
+    });
+  }
+
+  /**
+   * From the drawn nodes: the zoom from which their smallest label is readable (below it the canvas is compact), and
+   * the zoom below which a node's name would not fit its node at titlePx (broken after its underscores).
+   */
+  private measureReadability(): void {
+    const sizes = ['.gn-name', '.gn-type', '.gn-pname', '.gn-unit', '.gn-live', '.gn-problems'].flatMap((c) => {
+      const e = this.container.querySelector(c);
+      return e ? [parseFloat(getComputedStyle(e).fontSize)] : [];
+    });
+    this.fullZoom = sizes.length === 0 ? 1 : readablePx / Math.min(...sizes);
+    const title = this.container.querySelector('.gn-title');
+    const measure = document.createElement('canvas').getContext('2d');
+    let floor = zoomMin;
+    if (title && measure) {
+      const style = getComputedStyle(title);
+      measure.font = `${style.fontWeight} ${titlePx}px ${style.fontFamily}`;
+      for (const [name] of this.ids) {
+        const e = this.nodeElement(name);
+        const widest = Math.max(...name.split(/(?<=_)/).map((piece) => measure.measureText(piece).width));
+        if (e) floor = Math.max(floor, (widest + 12) / e.offsetWidth);
+      }
+    }
+    this.floorZoom = Math.min(1, floor);
+    this.df.zoom_min = this.floorZoom;
+    this.showZoom();
+  }
+
+  /** Compact below the zoom that keeps labels readable; the name's size follows the zoom (titlePx on screen). */
+  private showZoom(): void {
+    this.container.classList.toggle('compact', this.df.zoom < this.fullZoom);
+    this.container.style.setProperty('--gn-title-size', `${titlePx / this.df.zoom}px`);
   }
 
   /** Canvas coordinates of a point on the screen (for dropping from the palette). */
@@ -278,7 +344,8 @@ export class GraphCanvas {
     };
     const html = `<div class="gn-head"><span class="gn-name">${esc(name)}</span><span class="gn-type">${esc(type)}</span></div>`
       + `<div class="gn-body"><div class="gn-ins">${ports.inputs.map((p) => row('in', p)).join('')}</div>`
-      + `<div class="gn-outs">${ports.outputs.map((p) => row('out', p)).join('')}</div></div><div class="gn-problems"></div>`;
+      + `<div class="gn-outs">${ports.outputs.map((p) => row('out', p)).join('')}</div></div><div class="gn-problems"></div>`
+      + `<div class="gn-title"><span>${esc(name).replace(/_/g, '_<wbr>')}</span></div>`;
     const id = this.df.addNode(name, ports.inputs.length, ports.outputs.length, x, y, `gn${name === robotInstance ? ' gn-robot' : ''}`, {}, html);
     this.ids.set(name, id);
     this.names.set(id, name);

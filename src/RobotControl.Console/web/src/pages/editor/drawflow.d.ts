@@ -28,5 +28,6 @@ declare module 'drawflow' {
     on(event: 'connectionCreated' | 'connectionRemoved' | 'connectionSelected', handler: (e: ConnectionEvent) => void): void;
     on(event: 'nodeMoved' | 'nodeRemoved' | 'nodeSelected', handler: (id: string) => void): void;
     on(event: 'nodeUnselected' | 'connectionUnselected', handler: () => void): void;
+    on(event: 'zoom', handler: (zoom: number) => void): void;
   }
 }

@@ -158,3 +158,21 @@ export function rename(g: GraphModel, from: string, to: string): void {
     w.to = move(w.to);
   }
 }
+
+/** What a problem is about: the node (an instance's or its layout's path) or the wire it names, else null (the graph). */
+export function problemTarget(g: GraphModel, p: Problem): { node: string } | { wire: number } | null {
+  const instance = /^\$\.instances\[(\d+)\]/.exec(p.path);
+  const wire = /^\$\.wires\[(\d+)\]/.exec(p.path);
+  const layout = /^\$\.layout\.([^.]+)/.exec(p.path);
+  const node = instance ? g.instances[Number(instance[1])]?.name : layout ? layout[1] : undefined;
+  if (node !== undefined) return { node };
+  return wire && g.wires[Number(wire[1])] ? { wire: Number(wire[1]) } : null;
+}
+
+/** The words naming a problem's node or wire (`scaling_right`, `a.out -> b.in`), or '' for the graph. */
+export function targetName(g: GraphModel, target: { node: string } | { wire: number } | null): string {
+  if (target === null) return '';
+  if ('node' in target) return target.node;
+  const w = g.wires[target.wire];
+  return `${w.from} -> ${w.to}`;
+}

@@ -5,7 +5,7 @@ import { api, act, ApiError, markFirstValue, show } from '../../api';
 import { el, button } from '../../dom';
 import { SignalStream } from '../../stream';
 import { GraphCanvas, type Selection } from './canvas';
-import { type Catalog, type NodePorts, type Problem, History, emptyGraph, freshName, fromFile, robotInstance, toFile } from './model';
+import { type Catalog, type NodePorts, type Problem, History, emptyGraph, freshName, fromFile, problemTarget, robotInstance, targetName, toFile } from './model';
 import { markFields, removeNode, renderSide } from './side';
 import { clearDraft, readDraft, writeDraft } from './draft';
 import './editor.css';
@@ -94,10 +94,23 @@ export function editorPage(root: HTMLElement): () => void {
     canvasBox.dataset.checked = String(mine);
   }
 
+  // Every problem of the last check, each under the node or wire it names (a click picks that node or wire).
   function decorate(): void {
     const rest = canvas.decorate(problems);
     problemList.replaceChildren(el('h3', {}, problems.length === 0 ? 'No problems' : `${problems.length} problem${problems.length === 1 ? '' : 's'}`),
-      ...problems.map((p) => el('div', { class: rest.includes(p) ? 'problem' : 'problem placed' }, `${p.path}: ${p.message}`)));
+      ...problems.map((p) => {
+        const target = problemTarget(history.graph, p);
+        const line = el('div', { class: rest.includes(p) ? 'problem' : 'problem placed' },
+          ...(target ? [el('strong', { class: 'target' }, targetName(history.graph, target)), ' '] : []), `${p.path}: ${p.message}`);
+        if (target) {
+          line.addEventListener('click', () => {
+            selection = target;
+            canvas.pick(selection);
+            side();
+          });
+        }
+        return line;
+      }));
   }
 
   function side(): void {
