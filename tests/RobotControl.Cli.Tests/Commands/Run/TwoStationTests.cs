@@ -25,11 +25,9 @@ public sealed class TwoStationTests
         var surgeonReport = Path.Combine(folder, "surgeon.json");
 
         // The robot station first: until the surgeon's samples come it holds its arms (master_timeout, never heard from).
-        using var robot = new RunProcess("run", RobotGraph, "--transport", sim.Transport, "--duration", "10s", "--continue-on-fault", "--report", robotReport,
-            "--set", $"from_surgeon.url={nats.Url}", "--set", $"to_surgeon.url={nats.Url}");
+        using var robot = RobotStation(nats, sim, "10s", robotReport);
         robot.WaitFor("t=", RunProcess.Patience); // its loop runs
-        using (var surgeon = new RunProcess("run", SurgeonGraph, "--duration", "6s", "--report", surgeonReport,
-            "--set", $"to_robot.url={nats.Url}", "--set", $"from_robot.url={nats.Url}"))
+        using (var surgeon = SurgeonStation(nats, "6s", false, "--report", surgeonReport))
         {
             var code = surgeon.WaitForExit(RunProcess.Patience);
             Assert.True(code is 0 or 1, surgeon.Output); // 1: deadline misses on a loaded machine; 2 would be a refusal
@@ -67,11 +65,10 @@ public sealed class TwoStationTests
         using var sim = new SimulatorProcess(RunProcess.Patience);
         var robotReport = Path.Combine(Directory.CreateTempSubdirectory("rc2st").FullName, "robot.json");
         string[] link = ["--link", nats.Url, "--station", "lb1"];
-        using var robot = new RunProcess(["run", RobotGraph, "--transport", sim.Transport, "--duration", "8s", "--continue-on-fault", "--report", robotReport,
-            "--set", $"from_surgeon.url={nats.Url}", "--set", $"to_surgeon.url={nats.Url}", .. link]);
+        using var robot = RobotStation(nats, sim, "8s", robotReport, link);
         robot.WaitFor("t=", RunProcess.Patience);
         Assert.Contains($"link: robot station 'lb1' takes the surgeon's E-STOP on rc.lb1.command at {nats.Url}", robot.Output, StringComparison.Ordinal);
-        using (var surgeon = new RunProcess(true, ["run", SurgeonGraph, "--duration", "4s", "--set", $"to_robot.url={nats.Url}", "--set", $"from_robot.url={nats.Url}", .. link]))
+        using (var surgeon = SurgeonStation(nats, "4s", true, link))
         {
             surgeon.WaitFor("t=", RunProcess.Patience);
             surgeon.Type("estop");
@@ -111,10 +108,9 @@ public sealed class TwoStationTests
             using var sim = new SimulatorProcess(RunProcess.Patience);
             var robotReport = Path.Combine(Directory.CreateTempSubdirectory("rc2st").FullName, "robot.json");
             string[] link = ["--link", nats.Url, "--station", "lb1"];
-            using var robot = new RunProcess(["run", RobotGraph, "--transport", sim.Transport, "--duration", "9s", "--continue-on-fault", "--report", robotReport,
-                "--set", $"from_surgeon.url={nats.Url}", "--set", $"to_surgeon.url={nats.Url}", .. link]);
+            using var robot = RobotStation(nats, sim, "9s", robotReport, link);
             robot.WaitFor("t=", RunProcess.Patience);
-            using var surgeon = new RunProcess(["run", SurgeonGraph, "--duration", "6s", "--set", $"to_robot.url={nats.Url}", "--set", $"from_robot.url={nats.Url}", .. link]);
+            using var surgeon = SurgeonStation(nats, "6s", false, link);
             surgeon.WaitFor("robot station 'lb1': PEDAL_DOWN", RunProcess.Patience); // following the surgeon's hands
 
             nats.Kill();
@@ -160,4 +156,13 @@ public sealed class TwoStationTests
         Assert.Contains("station-surgeon-lb.json: the graph names no robot file: --virtual runs the virtual robot on a virtual clock; a station without a robot runs on the wall clock (leave --virtual out)", run.Output, StringComparison.Ordinal);
         Assert.DoesNotContain("   at ", run.Output, StringComparison.Ordinal);
     }
+
+    /// <summary>The robot station on <paramref name="sim"/>, its links on <paramref name="nats"/> (<c>--continue-on-fault</c>: a loaded machine may starve the simulator process).</summary>
+    private static RunProcess RobotStation(NatsServer nats, SimulatorProcess sim, string duration, string report, params string[] more) =>
+        new(["run", RobotGraph, "--transport", sim.Transport, "--duration", duration, "--continue-on-fault", "--report", report,
+            "--set", $"from_surgeon.url={nats.Url}", "--set", $"to_surgeon.url={nats.Url}", .. more]);
+
+    /// <summary>The surgeon's station, its links on <paramref name="nats"/>; with <paramref name="typing"/>, its standard input is a pipe.</summary>
+    private static RunProcess SurgeonStation(NatsServer nats, string duration, bool typing, params string[] more) =>
+        new(typing, ["run", SurgeonGraph, "--duration", duration, "--set", $"to_robot.url={nats.Url}", "--set", $"from_robot.url={nats.Url}", .. more]);
 }
