@@ -6,8 +6,8 @@ namespace RobotControl.Plugins.Link.Stations;
 /// The robot station's end of the link to the surgeon's station: its status out (<see cref="Publish"/> on
 /// <see cref="StationAddress.StatusSubject"/>) and its commands in: a subscriber on <see cref="StationAddress.CommandSubject"/> that hands
 /// each command to the station (an E-STOP goes to its safety supervisor, which never waits) and answers with what the
-/// station said. A sender repeats a command until answered, so each command carries an id: a repeat is answered again
-/// but acted on once. It runs on its own task and thread-pool threads, never on the loop or the bus thread, and the
+/// station said. A sender repeats a command until answered, so each command carries an id: a repeat gets the same
+/// answer again and is acted on once. It runs on its own task and thread-pool threads, never on the loop or the bus thread, and the
 /// robot station never needs it to stop safely (losing the link holds the arms through the master timeout).
 /// </summary>
 public sealed class RobotStationEndpoint : IAsyncDisposable
@@ -15,7 +15,7 @@ public sealed class RobotStationEndpoint : IAsyncDisposable
     private readonly NatsConnection _connection;
     private readonly Func<string, string> _act;
     private readonly CancellationTokenSource _stop = new();
-    private readonly HashSet<string> _done = [];
+    private readonly Dictionary<string, string> _answers = []; // by command id: a repeat gets the first answer again
     private readonly Task _serving;
     private StationStatus? _lastStatus;
     private long _lastPublished;
@@ -117,15 +117,17 @@ public sealed class RobotStationEndpoint : IAsyncDisposable
             return $"refused: '{request}' is not a command ({StationCommands.EmergencyStop} <id>)";
         }
 
-        lock (_done)
+        lock (_answers)
         {
-            if (!_done.Add(id))
+            if (_answers.TryGetValue(id, out var given))
             {
-                return $"{word} {id}: done already";
+                return given; // a repeat (its first answer came late or was lost): answered the same, not acted on again
             }
-        }
 
-        Acted++;
-        return $"{word} {id}: {_act(word)}";
+            Acted++;
+            var answer = $"{word} {id}: {_act(word)}";
+            _answers[id] = answer;
+            return answer;
+        }
     }
 }

@@ -8,7 +8,7 @@ namespace RobotControl.Plugins.Link.Tests.Stations;
 public sealed class StationCommandTests
 {
     [Fact]
-    public async Task An_e_stop_is_answered_with_the_stations_line_and_a_repeat_of_it_is_answered_but_acted_on_once()
+    public async Task An_e_stop_is_answered_with_the_stations_line_and_a_repeat_of_it_gets_the_same_answer_but_is_acted_on_once()
     {
         using var server = NatsServer.Start();
         var address = StationAddress.Parse(server.Url, "lb1");
@@ -28,11 +28,12 @@ public sealed class StationCommandTests
         Assert.True(outcome.Answered, outcome.Line);
         Assert.Matches("^estop [0-9a-f]{32}: taken$", outcome.Line);
 
-        // The same command again (a repeat whose first answer was lost): answered, not acted on twice.
+        // The same command again (a repeat whose first answer came late or was lost): the same answer, not acted on twice.
+        // (The sender itself repeats after 100 ms without an answer, so on a loaded machine this may be its third send.)
         await using var raw = new NatsConnection(new NatsOpts { Url = server.Url });
         var id = outcome.Line.Split(':')[0];
         var again = await raw.RequestAsync<string, string>(address.CommandSubject, id, replyOpts: new NatsSubOpts { Timeout = TimeSpan.FromSeconds(5) });
-        Assert.Equal($"{id}: done already", again.Data);
+        Assert.Equal(outcome.Line, again.Data);
         var junk = await raw.RequestAsync<string, string>(address.CommandSubject, "reboot now", replyOpts: new NatsSubOpts { Timeout = TimeSpan.FromSeconds(5) });
         Assert.Equal("refused: 'reboot now' is not a command (estop <id>)", junk.Data);
         Assert.Equal([StationCommands.EmergencyStop], acted);
