@@ -61,18 +61,30 @@ public sealed class RealtimeThreads
     public void Start(Action<Action> startBus, Action<Action> startLoop)
     {
         ArgumentNullException.ThrowIfNull(startBus);
+        Begin(startBus, startLoop);
+    }
+
+    /// <summary>
+    /// Starts the control loop's thread alone (a station without a robot has no bus thread), given the prologue it must
+    /// run first on its own thread. Returns once it has run.
+    /// </summary>
+    /// <exception cref="TimeoutException">The thread did not run its prologue within 5 s.</exception>
+    public void StartLoop(Action<Action> startLoop) => Begin(null, startLoop);
+
+    private void Begin(Action<Action>? startBus, Action<Action> startLoop)
+    {
         ArgumentNullException.ThrowIfNull(startLoop);
         if (!OperatingSystem.IsLinux() || (Priority == 0 && Cpu is null))
         {
             Outcome = "normal scheduling, any CPU";
-            startBus(static () => { });
+            startBus?.Invoke(static () => { });
             startLoop(static () => { });
             return;
         }
 
         string? bus = null, loop = null;
-        using var applied = new CountdownEvent(2);
-        startBus(() =>
+        using var applied = new CountdownEvent(startBus is null ? 1 : 2);
+        startBus?.Invoke(() =>
         {
             bus = ApplyToCurrentThread(Priority);
             applied.Signal();
@@ -84,10 +96,10 @@ public sealed class RealtimeThreads
         });
         if (!applied.Wait(PrologueTimeout))
         {
-            throw new TimeoutException("the bus and loop threads did not apply their scheduling within 5 s");
+            throw new TimeoutException(startBus is null ? "the loop thread did not apply its scheduling within 5 s" : "the bus and loop threads did not apply their scheduling within 5 s");
         }
 
-        Outcome = loop == bus ? loop! : $"loop thread: {loop}; bus thread: {bus}";
+        Outcome = startBus is null || loop == bus ? loop! : $"loop thread: {loop}; bus thread: {bus}";
     }
 
     /// <summary>

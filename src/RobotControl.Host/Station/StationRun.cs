@@ -41,7 +41,7 @@ public static class StationRun
         var stopped = true;
         try
         {
-            threads.Start(static _ => { }, loop.Start); // no bus thread: the station has no robot
+            threads.StartLoop(loop.Start); // no bus thread: the station has no robot
             var nextProgress = options.ProgressInterval;
             while (Stopwatch.GetElapsedTime(begin) < options.Duration && loop.ThreadFailure is null)
             {
