@@ -219,21 +219,13 @@ internal sealed class GoalWriter
             }
         }
 
-        foreach (var m in _layout.Motors)
-        {
-            Volatile.Write(ref _loop[m.Index], Math.Clamp(_goals[m.Index], m.Config.OutputMinRad, m.Config.OutputMaxRad));
-        }
-
         var torque = _life.TorqueEnabled;
         foreach (var m in _layout.Motors)
         {
-            var goal = m.IsManual ? m.ManualGoal(dt) : _goals[m.Index];
-            if (!torque && !m.IsManual)
-            {
-                goal = m.PositionRad; // torque off: keep the modules' goals on their positions
-            }
-
-            // Joint limits again at the motor (the firmware clamps a third time).
+            // Joint limits again at the motor (the firmware clamps a third time); the setpoints' goal so clamped is the loop goal.
+            var loop = Math.Clamp(_goals[m.Index], m.Config.OutputMinRad, m.Config.OutputMaxRad);
+            Volatile.Write(ref _loop[m.Index], loop);
+            var goal = m.IsManual ? m.ManualGoal(dt) : torque ? loop : m.PositionRad; // torque off: keep the modules' goals on their positions
             _goals[m.Index] = Math.Clamp(goal, m.Config.OutputMinRad, m.Config.OutputMaxRad);
         }
     }
